@@ -1,0 +1,90 @@
+#pragma once
+// CPDI weights (eq. 1.36-1.38): the alternative basis N*_i interpolates the tent N_i
+// (multi)linearly between the particle's corners, so over the particle
+//   phi_ip = 2^-Dim sum_c N_i(x_c),
+//   G_ip   = R^-T 2^-Dim sum_c s_c N_i(x_c),
+// where the domain is x_p + sum_k xi_k r_k, xi in [-1, 1]^Dim, R = [r_1 ... r_Dim], corner
+// c has signs s_c in {-1, +1}^Dim and x_c = x_p + R s_c.  A particle touches only the nodes
+// of the cells holding its corners, however many cells it spans (eq. 1.40).
+
+#include "basis/Tent.hpp"
+#include "core/Grid.hpp"
+#include "core/ParticleSet.hpp"
+
+namespace impm {
+
+template <int Dim, class Space = DefaultExecSpace>
+struct CpdiScheme {
+  static constexpr int kCorners = 1 << Dim;
+  GridGeometry<Dim> grid;
+  typename ParticleSet<Dim, Space>::Vectors x;
+  typename ParticleSet<Dim, Space>::Tensors domain;
+
+  CpdiScheme(const GridGeometry<Dim>& g, const ParticleSet<Dim, Space>& ps)
+      : grid(g), x(ps.x), domain(ps.domain) {}
+
+  KOKKOS_INLINE_FUNCTION static double sign(int c, int k) { return (c >> k) & 1 ? 1.0 : -1.0; }
+
+  // Corner c of particle p, in grid units.
+  KOKKOS_INLINE_FUNCTION void corner(int p, int c, double g[Dim]) const {
+    for (int d = 0; d < Dim; ++d) {
+      double xc = x(p, d);
+      for (int k = 0; k < Dim; ++k)
+        xc += sign(c, k) * domain(p, d, k);
+      g[d] = grid.gridCoord(d, xc);
+    }
+  }
+
+  KOKKOS_INLINE_FUNCTION bool nodeBox(int p, int lo[Dim], int hi[Dim], double tol) const {
+    for (int d = 0; d < Dim; ++d) {
+      lo[d] = grid.cells[d];
+      hi[d] = 0;
+    }
+    for (int c = 0; c < kCorners; ++c) {
+      double g[Dim];
+      corner(p, c, g);
+      for (int d = 0; d < Dim; ++d) {
+        if (!(g[d] >= -tol && g[d] <= grid.cells[d] + tol))
+          return false;
+        int cell = static_cast<int>(Kokkos::Experimental::floor(g[d]));
+        cell = cell < 0 ? 0 : (cell >= grid.cells[d] ? grid.cells[d] - 1 : cell);
+        if (cell < lo[d])
+          lo[d] = cell;
+        if (cell + 1 > hi[d])
+          hi[d] = cell + 1;
+      }
+    }
+    return true;
+  }
+
+  KOKKOS_INLINE_FUNCTION void evaluate(int p, const int* /*lo*/, const int node[Dim], double& phi,
+                                       double grad[Dim]) const {
+    double gxi[Dim] = {};
+    phi = 0.0;
+    for (int c = 0; c < kCorners; ++c) {
+      double g[Dim];
+      corner(p, c, g);
+      double n = 1.0;
+      for (int d = 0; d < Dim; ++d)
+        n *= tent(g[d] - node[d]);
+      phi += n;
+      for (int k = 0; k < Dim; ++k)
+        gxi[k] += sign(c, k) * n;
+    }
+    const double scale = 1.0 / kCorners;
+    phi *= scale;
+    // grad = R^-T gxi: solve R^T grad = gxi.
+    if constexpr (Dim == 1) {
+      grad[0] = scale * gxi[0] / domain(p, 0, 0);
+    } else {
+      const double r00 = domain(p, 0, 0), r01 = domain(p, 0, 1);
+      const double r10 = domain(p, 1, 0), r11 = domain(p, 1, 1);
+      const double det = r00 * r11 - r01 * r10;
+      // R^T = [[r00, r10], [r01, r11]]; its inverse is [[r11, -r10], [-r01, r00]] / det.
+      grad[0] = scale * (r11 * gxi[0] - r10 * gxi[1]) / det;
+      grad[1] = scale * (-r01 * gxi[0] + r00 * gxi[1]) / det;
+    }
+  }
+};
+
+}  // namespace impm

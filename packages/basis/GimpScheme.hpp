@@ -1,0 +1,65 @@
+#pragma once
+// GIMP weights: the exact average of the tent functions over the particle domain
+// (eq. 1.33-1.35).  The domain is the axis-aligned box x_p +- l, with half-widths l_d taken
+// from the diagonal of the particle's domain tensor (which is F times the initial box, so
+// l_d follows the stretch F_dd: "cpGIMP").  Tents are tensor products, so the average over
+// a box is the product of 1-D averages, exact for a domain spanning any number of cells.
+
+#include "basis/Tent.hpp"
+#include "core/Grid.hpp"
+#include "core/ParticleSet.hpp"
+
+namespace impm {
+
+template <int Dim, class Space = DefaultExecSpace>
+struct GimpScheme {
+  GridGeometry<Dim> grid;
+  typename ParticleSet<Dim, Space>::Vectors x;
+  typename ParticleSet<Dim, Space>::Tensors domain;
+
+  GimpScheme(const GridGeometry<Dim>& g, const ParticleSet<Dim, Space>& ps)
+      : grid(g), x(ps.x), domain(ps.domain) {}
+
+  // Domain ends along d in grid units.
+  KOKKOS_INLINE_FUNCTION void ends(int p, int d, double& a, double& b) const {
+    const double l = domain(p, d, d);
+    a = grid.gridCoord(d, x(p, d) - l);
+    b = grid.gridCoord(d, x(p, d) + l);
+  }
+
+  KOKKOS_INLINE_FUNCTION bool nodeBox(int p, int lo[Dim], int hi[Dim], double tol) const {
+    for (int d = 0; d < Dim; ++d) {
+      double a, b;
+      ends(p, d, a, b);
+      if (!(a >= -tol && b <= grid.cells[d] + tol))
+        return false;
+      lo[d] = a <= 0 ? 0 : static_cast<int>(Kokkos::Experimental::floor(a));
+      hi[d] = static_cast<int>(Kokkos::Experimental::ceil(b));
+      if (hi[d] > grid.cells[d])
+        hi[d] = grid.cells[d];
+    }
+    return true;
+  }
+
+  KOKKOS_INLINE_FUNCTION void evaluate(int p, const int* /*lo*/, const int node[Dim], double& phi,
+                                       double grad[Dim]) const {
+    double n[Dim], dn[Dim];
+    for (int d = 0; d < Dim; ++d) {
+      double a, b;
+      ends(p, d, a, b);
+      n[d] = tentAverage(a - node[d], b - node[d]);
+      dn[d] = (tent(b - node[d]) - tent(a - node[d])) / ((b - a) * grid.spacing[d]);
+    }
+    phi = 1.0;
+    for (int d = 0; d < Dim; ++d)
+      phi *= n[d];
+    for (int d = 0; d < Dim; ++d) {
+      grad[d] = dn[d];
+      for (int e = 0; e < Dim; ++e)
+        if (e != d)
+          grad[d] *= n[e];
+    }
+  }
+};
+
+}  // namespace impm

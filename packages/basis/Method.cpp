@@ -1,0 +1,48 @@
+#include "basis/Method.hpp"
+
+#include "basis/BuildMap.hpp"
+#include "basis/CpdiScheme.hpp"
+#include "basis/GimpScheme.hpp"
+#include "basis/PointScheme.hpp"
+#include "core/Errors.hpp"
+
+namespace impm {
+
+const std::vector<std::string>& methodNames() {
+  static const std::vector<std::string> names = {"fem", "mpm", "gimp", "cpdi"};
+  return names;
+}
+
+Method parseMethod(const std::string& name) {
+  const auto& names = methodNames();
+  for (std::size_t k = 0; k < names.size(); ++k)
+    if (names[k] == name)
+      return static_cast<Method>(k);
+  throw InputError("", "unknown method '" + name + "'");
+}
+
+std::string methodName(Method m) {
+  return methodNames()[static_cast<int>(m)];
+}
+
+template <int Dim, class Space>
+ParticleGridMap<Dim, Space> buildParticleGridMap(Method method, const GridGeometry<Dim>& grid,
+                                                 const ParticleSet<Dim, Space>& particles) {
+  switch (method) {
+    case Method::fem:
+    case Method::mpm:
+      return buildParticleGridMap(PointScheme<Dim, Space>(grid, particles), particles);
+    case Method::gimp:
+      return buildParticleGridMap(GimpScheme<Dim, Space>(grid, particles), particles);
+    case Method::cpdi:
+      return buildParticleGridMap(CpdiScheme<Dim, Space>(grid, particles), particles);
+  }
+  throw std::logic_error("unhandled method");
+}
+
+template ParticleGridMap<1> buildParticleGridMap(Method, const GridGeometry<1>&,
+                                                 const ParticleSet<1>&);
+template ParticleGridMap<2> buildParticleGridMap(Method, const GridGeometry<2>&,
+                                                 const ParticleSet<2>&);
+
+}  // namespace impm

@@ -1,0 +1,52 @@
+#pragma once
+// Single-point weights (eq. 1.29): phi_ip = N_i(x_p), G_ip = grad N_i(x_p).  Used by classic
+// MPM at particle centres and by FEM at Gauss points.  At a cell face the gradient of the
+// tent is taken from the cell that contains the point (left-closed).
+
+#include "basis/Tent.hpp"
+#include "core/Grid.hpp"
+#include "core/ParticleSet.hpp"
+
+namespace impm {
+
+template <int Dim, class Space = DefaultExecSpace>
+struct PointScheme {
+  GridGeometry<Dim> grid;
+  typename ParticleSet<Dim, Space>::Vectors x;
+
+  PointScheme(const GridGeometry<Dim>& g, const ParticleSet<Dim, Space>& ps) : grid(g), x(ps.x) {}
+
+  // The cell holding the point; false when the point is outside the grid.
+  KOKKOS_INLINE_FUNCTION bool nodeBox(int p, int lo[Dim], int hi[Dim], double tol) const {
+    for (int d = 0; d < Dim; ++d) {
+      const double g = grid.gridCoord(d, x(p, d));
+      if (!(g >= -tol && g <= grid.cells[d] + tol))
+        return false;
+      lo[d] = grid.cellAlong(d, x(p, d));
+      hi[d] = lo[d] + 1;
+    }
+    return true;
+  }
+
+  KOKKOS_INLINE_FUNCTION void evaluate(int p, const int lo[Dim], const int node[Dim], double& phi,
+                                       double grad[Dim]) const {
+    double n[Dim], dn[Dim];
+    for (int d = 0; d < Dim; ++d) {
+      const double s = grid.gridCoord(d, x(p, d)) - lo[d];  // local coordinate in [0, 1]
+      const bool left = node[d] == lo[d];
+      n[d] = left ? 1.0 - s : s;
+      dn[d] = (left ? -1.0 : 1.0) / grid.spacing[d];
+    }
+    phi = 1.0;
+    for (int d = 0; d < Dim; ++d)
+      phi *= n[d];
+    for (int d = 0; d < Dim; ++d) {
+      grad[d] = dn[d];
+      for (int e = 0; e < Dim; ++e)
+        if (e != d)
+          grad[d] *= n[e];
+    }
+  }
+};
+
+}  // namespace impm

@@ -1,0 +1,33 @@
+#pragma once
+// The 1-D tent function of a uniform grid (the classical FEM nodal basis, primer Fig. 1.3),
+// in grid units: node i sits at xi = i, and N_i(xi) = tent(xi - i).  Multi-dimensional tents
+// are tensor products of these.
+
+#include <Kokkos_Core.hpp>
+
+namespace impm {
+
+// N(s) = max(0, 1 - |s|).
+KOKKOS_INLINE_FUNCTION double tent(double s) {
+  const double a = s < 0 ? -s : s;
+  return a < 1.0 ? 1.0 - a : 0.0;
+}
+
+// Integral of the tent from -infinity to s: 0, (1+s)^2/2, 1-(1-s)^2/2, 1.  Used for the
+// exact average of N_i over a particle domain (eq. 1.33-1.35).
+KOKKOS_INLINE_FUNCTION double tentIntegral(double s) {
+  if (s <= -1.0)
+    return 0.0;
+  if (s <= 0.0)
+    return 0.5 * (1.0 + s) * (1.0 + s);
+  if (s < 1.0)
+    return 1.0 - 0.5 * (1.0 - s) * (1.0 - s);
+  return 1.0;
+}
+
+// Average of the tent over [a, b] (grid units); the tent value itself when b == a.
+KOKKOS_INLINE_FUNCTION double tentAverage(double a, double b) {
+  return b > a ? (tentIntegral(b) - tentIntegral(a)) / (b - a) : tent(a);
+}
+
+}  // namespace impm

@@ -1,0 +1,108 @@
+#include "core/Decomposition.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace impm {
+
+namespace {
+
+// Split `numRanks` into per-direction block counts proportional to the cell counts, so that
+// blocks are as square as the factorisation allows.  Never more blocks than cells.
+template <int Dim>
+std::array<int, Dim> chooseBlocks(const GridGeometry<Dim>& g, int numRanks) {
+  std::array<int, Dim> best;
+  best.fill(1);
+  if constexpr (Dim == 1) {
+    best[0] = std::min(numRanks, g.cells[0]);
+  } else {
+    double bestCost = 1e300;
+    for (int px = 1; px <= numRanks; ++px) {
+      if (numRanks % px)
+        continue;
+      const int py = numRanks / px;
+      if (px > g.cells[0] || py > g.cells[1])
+        continue;
+      // Perimeter of a block relative to its area: the communication per unit work.
+      const double bx = double(g.cells[0]) / px, by = double(g.cells[1]) / py;
+      const double cost = (bx + by) / (bx * by);
+      if (cost < bestCost) {
+        bestCost = cost;
+        best = {px, py};
+      }
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+template <int Dim>
+Decomposition<Dim>::Decomposition(const GridGeometry<Dim>& grid, int numRanks)
+    : grid_(grid), numRanks_(numRanks), blocks_(chooseBlocks<Dim>(grid, numRanks)) {
+  for (int d = 0; d < Dim; ++d) {
+    const int n = grid.cells[d], b = blocks_[d];
+    start_[d].resize(b + 1);
+    for (int k = 0; k <= b; ++k)
+      start_[d][k] = static_cast<int>((static_cast<long>(n) * k) / b);
+  }
+}
+
+template <int Dim>
+int Decomposition<Dim>::blockOf(int d, int cell) const {
+  const auto& s = start_[d];
+  return static_cast<int>(std::upper_bound(s.begin(), s.end(), cell) - s.begin()) - 1;
+}
+
+template <int Dim>
+int Decomposition<Dim>::ownerOfCell(GlobalId cell) const {
+  int idx[Dim];
+  grid_.cellIndex(cell, idx);
+  int rank = 0;
+  for (int d = Dim - 1; d >= 0; --d)
+    rank = rank * blocks_[d] + blockOf(d, idx[d]);
+  return rank;
+}
+
+template <int Dim>
+int Decomposition<Dim>::ownerOfNode(GlobalId node) const {
+  int idx[Dim];
+  grid_.nodeIndex(node, idx);
+  int rank = 0;
+  for (int d = Dim - 1; d >= 0; --d)
+    rank = rank * blocks_[d] + blockOf(d, std::min(idx[d], grid_.cells[d] - 1));
+  return rank;
+}
+
+template <int Dim>
+int Decomposition<Dim>::ownerOfPoint(const double x[Dim]) const {
+  int rank = 0;
+  for (int d = Dim - 1; d >= 0; --d)
+    rank = rank * blocks_[d] + blockOf(d, grid_.cellAlong(d, x[d]));
+  return rank;
+}
+
+template <int Dim>
+std::vector<GlobalId> Decomposition<Dim>::ownedNodes(int rank) const {
+  std::vector<GlobalId> nodes;
+  const GlobalId n = grid_.numNodes();
+  for (GlobalId id = 0; id < n; ++id)
+    if (ownerOfNode(id) == rank)
+      nodes.push_back(id);
+  return nodes;
+}
+
+template <int Dim>
+std::vector<GlobalId> Decomposition<Dim>::ownedCells(int rank) const {
+  std::vector<GlobalId> cells;
+  const GlobalId n = grid_.numCells();
+  for (GlobalId id = 0; id < n; ++id)
+    if (ownerOfCell(id) == rank)
+      cells.push_back(id);
+  return cells;
+}
+
+template class Decomposition<1>;
+template class Decomposition<2>;
+
+}  // namespace impm

@@ -1,0 +1,85 @@
+#include "core/DofMap.hpp"
+
+#include <algorithm>
+
+#include <Teuchos_CommHelpers.hpp>
+
+namespace impm {
+
+namespace {
+
+void sortUnique(std::vector<GlobalId>& v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+// Owned nodes that some rank touches: every rank marks the nodes it touches, and an Export
+// with ADD brings the marks to the owners.
+template <int Dim>
+std::vector<GlobalId> findOwnedActive(const NodeOwnership<Dim>& ownership,
+                                      const std::vector<GlobalId>& touched) {
+  const auto& nodeMap = ownership.nodeMap();
+  const std::vector<GO> gids(touched.begin(), touched.end());
+  auto touchedMap = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                                         Teuchos::ArrayView<const GO>(gids), 0, ownership.comm()));
+  Vector marks(touchedMap);
+  marks.putScalar(1.0);
+  Vector active(nodeMap);
+  active.doExport(marks, Export(touchedMap, nodeMap), Tpetra::ADD);
+  std::vector<GlobalId> result;
+  auto values = active.getData();
+  for (decltype(values.size()) k = 0; k < values.size(); ++k)
+    if (values[k] > 0.0)
+      result.push_back(nodeMap->getGlobalElement(static_cast<LO>(k)));
+  return result;  // ascending: the node map lists owned nodes in ascending order
+}
+
+}  // namespace
+
+template <int Dim>
+DofMap<Dim>::DofMap(const NodeOwnership<Dim>& ownership, std::vector<GlobalId> touched,
+                    const std::vector<ExtraDof>& extras)
+    : numNodes_(ownership.grid().numNodes()), numExtras_(static_cast<int>(extras.size())) {
+  const auto& comm = ownership.comm();
+  const int rank = comm->getRank();
+  sortUnique(touched);
+  ownedActive_ = findOwnedActive(ownership, touched);
+  const GlobalId localActive = static_cast<GlobalId>(ownedActive_.size());
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, localActive, Teuchos::outArg(numActiveNodes_));
+
+  // Owned DOFs: node components ascending, each extra right after its anchor node.
+  std::vector<GO> owned;
+  owned.reserve(ownedActive_.size() * Dim + extras.size());
+  std::vector<std::pair<GlobalId, int>> myExtras;  // (anchor, k), sorted by anchor
+  for (int k = 0; k < numExtras_; ++k)
+    if (ownership.ownerOfNode(extras[k].anchorNode) == rank)
+      myExtras.emplace_back(extras[k].anchorNode, k);
+  std::sort(myExtras.begin(), myExtras.end());
+  auto nextExtra = myExtras.begin();
+  for (GlobalId node : ownedActive_) {
+    for (; nextExtra != myExtras.end() && nextExtra->first < node; ++nextExtra)
+      owned.push_back(extraDof(nextExtra->second));
+    for (int d = 0; d < Dim; ++d)
+      owned.push_back(nodeDof(node, d));
+    for (; nextExtra != myExtras.end() && nextExtra->first == node; ++nextExtra)
+      owned.push_back(extraDof(nextExtra->second));
+  }
+  for (; nextExtra != myExtras.end(); ++nextExtra)
+    owned.push_back(extraDof(nextExtra->second));
+
+  // Overlap DOFs: the owned ones first, then touched nodes owned elsewhere.
+  std::vector<GO> overlap = owned;
+  for (GlobalId node : touched)
+    if (ownership.ownerOfNode(node) != rank)
+      for (int d = 0; d < Dim; ++d)
+        overlap.push_back(nodeDof(node, d));
+
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  owned_ = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(owned), 0, comm));
+  overlap_ = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(overlap), 0, comm));
+}
+
+template class DofMap<1>;
+template class DofMap<2>;
+
+}  // namespace impm

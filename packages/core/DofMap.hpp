@@ -1,0 +1,52 @@
+#pragma once
+// The unknowns of one solve, as Tpetra maps: the displacement components of the *active*
+// grid nodes (those that some integration point touches, so that no row of the system is
+// empty) plus extra unknowns such as the boundary forces F(0), F(L) of the primer's
+// nu_n + 2 system (eq. 1.18-1.19).
+//
+// Numbering: component d of node n is n * Dim + d; extra unknown k is numNodes * Dim + k.
+// The owned map lists, on each rank, its active nodes (ascending) with each extra unknown
+// placed right after the DOFs of its anchor node; keeping a boundary force next to the
+// nodes it acts on keeps incomplete factorisations (ILU) close to exact.
+// The overlap map is the owned map followed by the other DOFs this rank's contributions
+// reach, as Tpetra's FE assembly requires.
+
+#include <vector>
+
+#include "core/NodeOwnership.hpp"
+
+namespace impm {
+
+// An extra unknown, owned by the rank that owns its anchor node.
+struct ExtraDof {
+  GlobalId anchorNode;
+};
+
+template <int Dim>
+class DofMap {
+ public:
+  // Collective.  `touched`: the grid nodes this rank's contributions reach (any order,
+  // repeats allowed).  `extras`: the same list on every rank.
+  DofMap(const NodeOwnership<Dim>& ownership, std::vector<GlobalId> touched,
+         const std::vector<ExtraDof>& extras);
+
+  const Teuchos::RCP<const Map>& ownedMap() const { return owned_; }
+  const Teuchos::RCP<const Map>& overlapMap() const { return overlap_; }
+
+  GO nodeDof(GlobalId node, int component) const { return node * Dim + component; }
+  GO extraDof(int k) const { return numNodes_ * Dim + k; }
+  bool isExtraDof(GO dof) const { return dof >= numNodes_ * Dim; }
+  int numExtras() const { return numExtras_; }
+  // Active nodes owned by this rank, ascending.
+  const std::vector<GlobalId>& ownedActiveNodes() const { return ownedActive_; }
+  GlobalId numActiveNodes() const { return numActiveNodes_; }
+
+ private:
+  GlobalId numNodes_;
+  int numExtras_;
+  std::vector<GlobalId> ownedActive_;
+  GlobalId numActiveNodes_ = 0;
+  Teuchos::RCP<const Map> owned_, overlap_;
+};
+
+}  // namespace impm

@@ -1,0 +1,29 @@
+#pragma once
+// The two kinds of failure a user can cause or meet, each with a one-line message.
+//
+// InputError: the deck is wrong (unknown name, wrong type, value out of range).  It names
+// the parameter path; the driver adds the file name.  Raised before any output is written.
+// NumericalError: the computation cannot go on (Newton diverged, a particle left the grid,
+// a non-positive Jacobian).  It says what, where and when.
+
+#include <stdexcept>
+#include <string>
+
+namespace impm {
+
+class InputError : public std::runtime_error {
+ public:
+  InputError(const std::string& path, const std::string& what)
+      : std::runtime_error(path.empty() ? what : path + ": " + what), path_(path) {}
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+class NumericalError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace impm

@@ -1,0 +1,18 @@
+#include "core/NodeOwnership.hpp"
+
+namespace impm {
+
+template <int Dim>
+NodeOwnership<Dim>::NodeOwnership(const GridGeometry<Dim>& grid,
+                                  const Teuchos::RCP<const Comm>& comm)
+    : grid_(grid), comm_(comm), decomposition_(grid, comm->getSize()) {
+  const auto owned = decomposition_.ownedNodes(comm->getRank());
+  const std::vector<GO> gids(owned.begin(), owned.end());
+  nodeMap_ = Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(grid.numNodes()),
+                                  Teuchos::ArrayView<const GO>(gids), 0, comm));
+}
+
+template class NodeOwnership<1>;
+template class NodeOwnership<2>;
+
+}  // namespace impm

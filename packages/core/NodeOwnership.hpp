@@ -1,0 +1,31 @@
+#pragma once
+// Which rank owns which grid node, as a Tpetra map over all grid nodes (built once per
+// grid).  Used to find the active nodes of a step and to gather nodal output.
+
+#include <Teuchos_RCP.hpp>
+
+#include "core/Decomposition.hpp"
+#include "core/TpetraTypes.hpp"
+
+namespace impm {
+
+template <int Dim>
+class NodeOwnership {
+ public:
+  NodeOwnership(const GridGeometry<Dim>& grid, const Teuchos::RCP<const Comm>& comm);
+
+  const GridGeometry<Dim>& grid() const { return grid_; }
+  const Decomposition<Dim>& decomposition() const { return decomposition_; }
+  const Teuchos::RCP<const Comm>& comm() const { return comm_; }
+  // Map of all grid nodes, each owned by the rank of its cell.
+  const Teuchos::RCP<const Map>& nodeMap() const { return nodeMap_; }
+  int ownerOfNode(GlobalId node) const { return decomposition_.ownerOfNode(node); }
+
+ private:
+  GridGeometry<Dim> grid_;
+  Teuchos::RCP<const Comm> comm_;
+  Decomposition<Dim> decomposition_;
+  Teuchos::RCP<const Map> nodeMap_;
+};
+
+}  // namespace impm
