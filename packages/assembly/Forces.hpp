@@ -1,0 +1,33 @@
+#pragma once
+// Sums over particles into the grid system, as Kokkos kernels with atomic updates of the
+// overlap (owned + shared) local arrays; Tpetra's FE objects then export shared rows.
+//
+//  internal force   f_ia += w_p sum_b P^n_ab G_ipb            (eq. 1.63; 1.34/1.37 when linear)
+//  external force   f_ia -= s phi_ip force_pa                 (eq. 1.35/1.38, force = f V_p)
+//  tangent          K_ia,jc += w_p sum_bd G_ipb A^n_abcd G_jpd (eq. 1.16, 1.34, 1.37)
+// with w_p = section_p V_p the particle's volume.  The residual of the grid system is
+// f_int - f_ext - boundary forces, whose Jacobian is K.
+
+#include "assembly/Kinematics.hpp"
+
+namespace impm {
+
+using LocalMatrix = FECrsMatrix::local_matrix_device_type;
+
+template <int Dim>
+void addInternalForce(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryDofs,
+                      const ParticleSet<Dim>& particles,
+                      const typename ParticleSet<Dim>::Tensors& Pn, const LocalValuesMutable& f);
+
+template <int Dim>
+void addExternalForce(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryDofs,
+                      const typename ParticleSet<Dim>::Vectors& force, double scale,
+                      const LocalValuesMutable& f);
+
+// Rows are overlap-map indices, columns indices in the matrix's column map.
+template <int Dim>
+void addTangent(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryRows,
+                const Kokkos::View<LO*>& entryCols, const ParticleSet<Dim>& particles,
+                const Tangents<Dim>& An, const LocalMatrix& K);
+
+}  // namespace impm

@@ -1,0 +1,22 @@
+#pragma once
+// The sparsity graph of the grid system: node i couples with node j when one integration
+// point touches both (the rows of the ragged array Y), every component with every other;
+// plus the couplings that boundary conditions add (boundary-force unknowns and the nodes
+// they act on).  Rows are built once with their exact length, then handed to Tpetra's
+// FECrsGraph, which exports shared rows to their owners.  In assembly mode the matrix's
+// local column indices refer to the graph's column map, not to the overlap map.
+
+#include <utility>
+#include <vector>
+
+#include "basis/ParticleGridMap.hpp"
+#include "core/DofMap.hpp"
+
+namespace impm {
+
+template <int Dim>
+Teuchos::RCP<FECrsGraph> buildGraph(const ParticleGridMap<Dim>& map,
+                                    const Kokkos::View<LO*>& entryDofs, const DofMap<Dim>& dofs,
+                                    const std::vector<std::pair<GO, GO>>& extraCouplings);
+
+}  // namespace impm

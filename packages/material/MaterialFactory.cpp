@@ -1,0 +1,88 @@
+#include "material/MaterialFactory.hpp"
+
+#include <functional>
+
+#include "core/Errors.hpp"
+#include "core/Parameters.hpp"
+#include "material/LinearElastic1D.hpp"
+
+namespace impm {
+
+namespace {
+
+template <int Dim>
+struct Entry {
+  std::string model;
+  std::function<Teuchos::ParameterList()> validParameters;
+  std::function<std::shared_ptr<Material<Dim>>(const std::string&, const Teuchos::ParameterList&)>
+      create;
+};
+
+template <class M, int Dim>
+Entry<Dim> entry() {
+  return {M::model(), &M::validParameters,
+          [](const std::string& name, const Teuchos::ParameterList& params) {
+            return std::make_shared<M>(name, params);
+          }};
+}
+
+template <int Dim>
+const std::vector<Entry<Dim>>& registry();
+
+template <>
+const std::vector<Entry<1>>& registry<1>() {
+  static const std::vector<Entry<1>> models = {
+      entry<LinearElastic1D, 1>(),
+  };
+  return models;
+}
+
+template <>
+const std::vector<Entry<2>>& registry<2>() {
+  static const std::vector<Entry<2>> models = {};
+  return models;
+}
+
+}  // namespace
+
+template <int Dim>
+std::vector<std::string> materialModels() {
+  std::vector<std::string> names;
+  for (const auto& e : registry<Dim>())
+    names.push_back(e.model);
+  return names;
+}
+
+template <int Dim>
+Teuchos::ParameterList materialValidParameters() {
+  Teuchos::ParameterList valid;
+  const auto models = materialModels<Dim>();
+  declareChoice(valid, "Model", models.empty() ? "" : models.front(), models, "Constitutive model",
+                true);
+  declareDouble(valid, "Density", 1.0, "Mass density in the reference configuration",
+                Bounds::positive());
+  for (const auto& e : registry<Dim>())
+    valid.sublist("[Model=" + e.model + "]") = e.validParameters();
+  return valid;
+}
+
+template <int Dim>
+std::shared_ptr<Material<Dim>> createMaterial(const std::string& name,
+                                              const Teuchos::ParameterList& params) {
+  const auto& model = params.get<std::string>("Model");
+  for (const auto& e : registry<Dim>())
+    if (e.model == model)
+      return e.create(name, params);
+  throw InputError("Materials/" + name + "/Model", "unknown model '" + model + "'");
+}
+
+template std::vector<std::string> materialModels<1>();
+template std::vector<std::string> materialModels<2>();
+template Teuchos::ParameterList materialValidParameters<1>();
+template Teuchos::ParameterList materialValidParameters<2>();
+template std::shared_ptr<Material<1>> createMaterial<1>(const std::string&,
+                                                        const Teuchos::ParameterList&);
+template std::shared_ptr<Material<2>> createMaterial<2>(const std::string&,
+                                                        const Teuchos::ParameterList&);
+
+}  // namespace impm

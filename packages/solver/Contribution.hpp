@@ -1,0 +1,58 @@
+#pragma once
+// A term of the grid system other than the particle integrals: the boundary-force unknowns
+// of Robin ends (primer eq. 1.18-1.19), Dirichlet rows, inertia.  Contributions are defined
+// here and implemented above (bc), so the solver depends on no particular condition.
+//
+// Per step the grid system calls prepare() (before the unknowns are numbered), then
+// evaluates residuals and Jacobians as Newton asks, then commit() with the converged
+// solution.  Indices given to a contribution are local to the overlap map.
+
+#include <utility>
+#include <vector>
+
+#include "basis/ParticleGridMap.hpp"
+#include "core/DofMap.hpp"
+#include "core/ParticleSet.hpp"
+
+namespace impm {
+
+using HostValues = Kokkos::View<const double**, Kokkos::LayoutLeft, Kokkos::HostSpace>;
+using HostValuesMutable = Kokkos::View<double**, Kokkos::LayoutLeft, Kokkos::HostSpace>;
+
+// What a contribution sees of the current step.
+template <int Dim>
+struct StepContext {
+  const GridGeometry<Dim>& grid;
+  const ParticleSet<Dim>& particles;
+  const ParticleGridMap<Dim>& map;
+  const Kokkos::View<LO*>& entryDofs;
+  const DofMap<Dim>& dofs;
+  double time;        // time at the end of the step
+  double loadFactor;  // fraction of the loads applied at the end of the step (static ramps)
+  int firstExtra;     // global index of this contribution's first extra unknown
+};
+
+template <int Dim>
+class Contribution {
+ public:
+  virtual ~Contribution() = default;
+
+  // Before numbering: extra unknowns (the same list on every rank) and the grid nodes this
+  // rank's entries reach.
+  virtual void prepare(const NodeOwnership<Dim>& /*ownership*/, std::vector<ExtraDof>& /*extras*/,
+                       std::vector<GlobalId>& /*touched*/) {}
+  // Matrix entries (global row, global column) this rank adds beyond the particle couplings.
+  virtual void couplings(const StepContext<Dim>& /*ctx*/,
+                         std::vector<std::pair<GO, GO>>& /*out*/) const {}
+  // Initial guess of the extra unknowns this rank owns (x is the owned vector).
+  virtual void initialGuess(const StepContext<Dim>& /*ctx*/, Vector& /*x*/) const {}
+  // Adds to the residual / Jacobian; x and f are overlap-local.
+  virtual void addResidual(const StepContext<Dim>& /*ctx*/, const HostValues& /*x*/,
+                           const HostValuesMutable& /*f*/) const {}
+  virtual void addJacobian(const StepContext<Dim>& /*ctx*/, const HostValues& /*x*/,
+                           FECrsMatrix& /*J*/) const {}
+  // The step converged with solution x (overlap-local).  Collective.
+  virtual void commit(const StepContext<Dim>& /*ctx*/, const HostValues& /*x*/) {}
+};
+
+}  // namespace impm

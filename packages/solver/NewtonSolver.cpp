@@ -1,0 +1,151 @@
+#include "solver/NewtonSolver.hpp"
+
+#include <NOX.H>
+#include <NOX_Thyra.H>
+#include <NOX_Thyra_Vector.H>
+#include <NOX_Observer.hpp>
+#include <NOX_SolverStats.hpp>
+#include <Thyra_TpetraThyraWrappers.hpp>
+
+#include <cmath>
+#include <iomanip>
+#include <ostream>
+
+#include "core/Parameters.hpp"
+#include "solver/LinearSolver.hpp"
+#include "solver/ModelEvaluator.hpp"
+
+namespace impm {
+
+namespace {
+
+// Records ||R|| and the linear iterations of every Newton iteration.
+class IterationRecorder : public NOX::Observer {
+ public:
+  IterationRecorder(NewtonReport& report, std::ostream* log, const std::string& indent)
+      : report_(report), log_(log), indent_(indent) {}
+
+  void runPostIterate(const NOX::Solver::Generic& solver) override {
+    const double norm = solver.getSolutionGroup().getNormF();
+    const auto stats = solver.getSolverStatistics();
+    const int linear = stats->linearSolve.lastLinearSolve_NumIterations;
+    report_.residualNorms.push_back(norm);
+    report_.linearIterations.push_back(linear);
+    if (log_)
+      *log_ << indent_ << "newton " << std::setw(2) << report_.iterations()
+            << "  |R| = " << std::scientific << std::setprecision(3) << norm
+            << "  linear iterations " << linear << std::defaultfloat << "\n";
+  }
+
+ private:
+  NewtonReport& report_;
+  std::ostream* log_;
+  std::string indent_;
+};
+
+}  // namespace
+
+int NewtonReport::totalLinearIterations() const {
+  int total = 0;
+  for (int n : linearIterations)
+    total += n;
+  return total;
+}
+
+Teuchos::ParameterList NewtonSolver::validParameters() {
+  Teuchos::ParameterList valid;
+  declareChoice(valid, "Line Search", "Backtrack", {"Full Step", "Backtrack", "Polynomial"},
+                "NOX line search of each Newton iteration");
+  declareInt(valid, "Maximum Iterations", 20, "Newton iterations before a step counts as failed",
+             Bounds::atLeast(1));
+  declareDouble(valid, "Relative Tolerance", 1e-10,
+                "Converged when ||R|| <= this times ||R|| of the initial guess",
+                Bounds::positive());
+  declareDouble(valid, "Absolute Tolerance", 0.0, "Also converged when ||R|| <= this (0: not used)",
+                Bounds::nonNegative());
+  declareDouble(valid, "Linear Tolerance", 1e-10,
+                "Relative residual tolerance of each linear solve (overrides the Belos list's)",
+                Bounds::positive());
+  declareBool(valid, "Print Iterations", true,
+              "Print every Newton iteration's residual norm and linear iteration count");
+  declareOpaque(valid, "Linear Solver",
+                "A Stratimikos parameter list, merged over impm's default (Belos Pseudo Block "
+                "GMRES with an Ifpack2 ILUT preconditioner); Ifpack2 and MueLu are registered. "
+                "Checked by Stratimikos, Belos, Ifpack2 and MueLu at start-up.");
+  declareOpaque(valid, "NOX",
+                "Extra NOX parameters (a NOX::Solver list), merged over the ones impm sets.  "
+                "Checked by NOX.");
+  return valid;
+}
+
+NewtonSolver::NewtonSolver(const Teuchos::ParameterList& params,
+                           const Teuchos::RCP<const Comm>& comm)
+    : comm_(comm),
+      lows_(
+          createLinearSolveStrategy(params.sublist("Linear Solver"), comm, "Solver/Linear Solver")),
+      relativeTolerance_(params.get<double>("Relative Tolerance")),
+      absoluteTolerance_(params.get<double>("Absolute Tolerance")),
+      maxIterations_(params.get<int>("Maximum Iterations")) {
+  auto& p = noxParams_;
+  p.set("Nonlinear Solver", "Line Search Based");
+  p.sublist("Line Search").set("Method", params.get<std::string>("Line Search"));
+  p.sublist("Direction").set("Method", "Newton");
+  auto& newton = p.sublist("Direction").sublist("Newton");
+  newton.set("Forcing Term Method", "Constant");
+  newton.sublist("Linear Solver").set("Tolerance", params.get<double>("Linear Tolerance"));
+  p.sublist("Printing").set("Output Information", NOX::Utils::Error);
+  p.setParameters(params.sublist("NOX"));
+}
+
+NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vector& x) const {
+  NewtonReport report;
+  std::ostream* log = (log_ && comm_->getRank() == 0) ? log_ : nullptr;
+  auto me = Teuchos::rcp(new MpmModelEvaluator(model, lows_));
+  auto guess = Thyra::createVector<double, LO, GO, Node>(Teuchos::rcpFromRef(x), me->get_x_space());
+  auto group =
+      Teuchos::rcp(new NOX::Thyra::Group(NOX::Thyra::Vector(guess), me, me->create_W_op(), lows_,
+                                         Teuchos::null, Teuchos::null, Teuchos::null));
+  group->computeF();
+  const double initial = group->getNormF();
+  report.residualNorms.push_back(initial);
+  if (log)
+    *log << indent_ << "newton  0  |R| = " << std::scientific << std::setprecision(3) << initial
+         << std::defaultfloat << "\n";
+  if (initial == 0.0 || initial <= absoluteTolerance_) {
+    report.converged = true;
+    return report;
+  }
+
+  using namespace NOX::StatusTest;
+  auto converged = Teuchos::rcp(new Combo(Combo::OR));
+  converged->addStatusTest(Teuchos::rcp(new NormF(*group, relativeTolerance_)));
+  if (absoluteTolerance_ > 0)
+    converged->addStatusTest(Teuchos::rcp(new NormF(absoluteTolerance_)));
+  auto tests = Teuchos::rcp(new Combo(Combo::OR));
+  tests->addStatusTest(Teuchos::rcp(new FiniteValue));
+  tests->addStatusTest(converged);
+  tests->addStatusTest(Teuchos::rcp(new MaxIters(maxIterations_)));
+
+  auto params = Teuchos::rcp(new Teuchos::ParameterList(noxParams_));
+  params->sublist("Solver Options")
+      .set<Teuchos::RCP<NOX::Observer>>("Observer",
+                                        Teuchos::rcp(new IterationRecorder(report, log, indent_)));
+  auto solver = NOX::Solver::buildSolver(group, tests, params);
+  const StatusType status = solver->solve();
+
+  const auto& solution = dynamic_cast<const NOX::Thyra::Vector&>(solver->getSolutionGroup().getX());
+  auto tpetra = Thyra::TpetraOperatorVectorExtraction<double, LO, GO, Node>::getConstTpetraVector(
+      solution.getThyraRCPVector());
+  Tpetra::deep_copy(x, *tpetra);
+  report.converged = status == Converged;
+  if (!report.converged) {
+    const double last = report.residualNorms.back();
+    report.failure = !std::isfinite(last) ? "the residual is not finite"
+                     : report.iterations() >= maxIterations_
+                         ? "no convergence in " + std::to_string(maxIterations_) + " iterations"
+                         : "NOX stopped (line search or linear solve failure)";
+  }
+  return report;
+}
+
+}  // namespace impm

@@ -1,0 +1,54 @@
+#pragma once
+// Newton's method through NOX (NOX::Thyra::Group over MpmModelEvaluator) with a Stratimikos
+// linear solver.  Settings come from the deck's Solver sublist; every Newton iteration's
+// residual norm and linear iteration count is recorded (and printed when asked).
+
+#include <Teuchos_ParameterList.hpp>
+#include <Thyra_LinearOpWithSolveFactoryBase.hpp>
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "solver/ResidualModel.hpp"
+
+namespace impm {
+
+struct NewtonReport {
+  bool converged = false;
+  std::vector<double> residualNorms;  // ||R|| before the first and after every iteration
+  std::vector<int> linearIterations;  // per Newton iteration
+  std::string failure;                // why it stopped, when not converged
+
+  int iterations() const { return static_cast<int>(linearIterations.size()); }
+  int totalLinearIterations() const;
+};
+
+class NewtonSolver {
+ public:
+  // Valid parameters of the deck's Solver sublist.
+  static Teuchos::ParameterList validParameters();
+
+  // `params`: a validated Solver sublist.  Builds (and checks) the linear solver.
+  NewtonSolver(const Teuchos::ParameterList& params, const Teuchos::RCP<const Comm>& comm);
+
+  // Solves R(x) = 0 from the guess in x; x holds the last iterate on return.  Collective.
+  NewtonReport solve(const Teuchos::RCP<ResidualModel>& model, Vector& x) const;
+
+  // Where per-iteration lines go (rank 0 only); null: nowhere.
+  void setLog(std::ostream* log, const std::string& indent) {
+    log_ = log;
+    indent_ = indent;
+  }
+
+ private:
+  Teuchos::RCP<const Comm> comm_;
+  Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> lows_;
+  Teuchos::ParameterList noxParams_;
+  double relativeTolerance_, absoluteTolerance_;
+  int maxIterations_;
+  std::ostream* log_ = nullptr;
+  std::string indent_;
+};
+
+}  // namespace impm

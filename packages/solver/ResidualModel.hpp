@@ -1,0 +1,20 @@
+#pragma once
+// A discrete nonlinear system R(x) = 0 over Tpetra, as the Newton solver sees it: a map of
+// unknowns, a Jacobian with a fixed graph, and an evaluation of R and/or dR/dx.
+
+#include "core/TpetraTypes.hpp"
+
+namespace impm {
+
+class ResidualModel {
+ public:
+  virtual ~ResidualModel() = default;
+  // Distribution of the unknowns (and of the residual).
+  virtual Teuchos::RCP<const Map> map() const = 0;
+  // A matrix with the Jacobian's graph, to be filled by evaluate().
+  virtual Teuchos::RCP<CrsMatrix> createJacobian() const = 0;
+  // Fills the residual and/or the Jacobian at x; either pointer may be null.  Collective.
+  virtual void evaluate(const Vector& x, Vector* residual, CrsMatrix* jacobian) = 0;
+};
+
+}  // namespace impm

@@ -1,0 +1,95 @@
+// The 1-D grid system end to end below the input layer: particles, map, Robin ends, the
+// NOX/Stratimikos solve.  A linear field must be reproduced to round-off (patch test) by
+// every method whose quadrature is exact for it, on any number of ranks.
+
+#include <gtest/gtest.h>
+
+#include <Teuchos_DefaultComm.hpp>
+
+#include "bc/RobinEnd.hpp"
+#include "core/Parameters.hpp"
+#include "material/MaterialFactory.hpp"
+#include "solver/GridSystem.hpp"
+#include "solver/NewtonSolver.hpp"
+
+namespace impm {
+namespace {
+
+// Integration points of [0, 1] on this rank: two per cell, either Gauss points (fem) or
+// particle centres with their half-lengths.
+ParticleSet<1> barPoints(const NodeOwnership<1>& own, Method method, const Formula& load) {
+  const auto& g = own.grid();
+  const double h = g.spacing[0];
+  const int rank = own.comm()->getRank();
+  std::vector<double> x, w;
+  for (int c = 0; c < g.cells[0]; ++c) {
+    const double mid = (c + 0.5) * h;
+    if (own.decomposition().ownerOfPoint(&mid) != rank)
+      continue;
+    const double off = method == Method::fem ? h / (2 * std::sqrt(3.0)) : h / 4;
+    x.push_back(mid - off), x.push_back(mid + off), w.push_back(h / 2), w.push_back(h / 2);
+  }
+  ParticleSet<1> ps(x.size());
+  auto X = Kokkos::create_mirror_view(ps.X);
+  auto V = Kokkos::create_mirror_view(ps.volume);
+  auto r = Kokkos::create_mirror_view(ps.domain);
+  auto A = Kokkos::create_mirror_view(ps.section);
+  auto F = Kokkos::create_mirror_view(ps.F);
+  auto f = Kokkos::create_mirror_view(ps.force);
+  for (std::size_t p = 0; p < x.size(); ++p) {
+    X(p, 0) = x[p], V(p) = w[p], r(p, 0, 0) = w[p] / 2, A(p) = 1.0, F(p, 0, 0) = 1.0;
+    f(p, 0) = load(x[p]) * w[p];
+  }
+  Kokkos::deep_copy(ps.X, X), Kokkos::deep_copy(ps.x, X), Kokkos::deep_copy(ps.volume, V);
+  Kokkos::deep_copy(ps.domain, r), Kokkos::deep_copy(ps.section, A), Kokkos::deep_copy(ps.F, F);
+  Kokkos::deep_copy(ps.force, f);
+  return ps;
+}
+
+std::shared_ptr<Contribution<1>> robin(const std::string& end, double a, double b, double g,
+                                       double at) {
+  Teuchos::ParameterList p;
+  p.set("Body", std::string("bar")), p.set("End", end);
+  p.set("alpha", a), p.set("beta", b), p.set("gamma", g);
+  validateParameters(p, RobinEnd::validParameters());
+  return std::make_shared<RobinEnd>(end, p, at, Kinematics::small);
+}
+
+TEST(BarSolve, PatchTestIsExact) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  for (Method method : {Method::fem, Method::mpm, Method::gimp, Method::cpdi}) {
+    NodeOwnership<1> own(makeGridGeometry<1>({0.0}, {1.0}, {8}), comm);
+    auto ps = barPoints(own, method, Formula(1.0));
+    Teuchos::ParameterList mat;
+    mat.set("Model", std::string("linear")), mat.set("E", std::string("1 - x/2"));
+    validateParameters(mat, materialValidParameters<1>());
+    std::vector<std::shared_ptr<Material<1>>> materials = {createMaterial<1>("steel", mat)};
+    materials[0]->initialize(ps, 0);
+    std::vector<std::shared_ptr<Contribution<1>>> bcs = {robin("left", 0, 1, 0, 0.0),
+                                                         robin("right", 1, 0, 1, 1.0)};
+    auto system = Teuchos::rcp(
+        new GridSystem<1>(own, method, Kinematics::small, ps, materials, bcs, 1.0, 1.0));
+    Teuchos::ParameterList solverParams;
+    validateParameters(solverParams, NewtonSolver::validParameters());
+    NewtonSolver newton(solverParams, comm);
+    auto x = system->initialGuess();
+    const auto report = newton.solve(system, *x);
+    ASSERT_TRUE(report.converged) << methodName(method);
+    system->commit(*x);
+    // u_i = 2 x_i at every active node, F(0) = -2.
+    auto values = x->getData();
+    const auto& map = *x->getMap();
+    for (decltype(values.size()) k = 0; k < values.size(); ++k) {
+      const GO dof = map.getGlobalElement(k);
+      if (system->dofs().isExtraDof(dof))
+        continue;
+      EXPECT_NEAR(values[k], 2.0 * dof / 8.0, 1e-12) << methodName(method) << " dof " << dof;
+    }
+    EXPECT_NEAR(dynamic_cast<RobinEnd&>(*bcs[0]).force(), -2.0, 1e-12) << methodName(method);
+    EXPECT_NEAR(dynamic_cast<RobinEnd&>(*bcs[1]).force(), 1.0, 1e-12) << methodName(method);
+    EXPECT_LE(report.iterations(), 2) << methodName(method);
+  }
+}
+
+}  // namespace
+}  // namespace impm
