@@ -3,8 +3,9 @@
 // point touches both (the rows of the ragged array Y), every component with every other;
 // plus the couplings that boundary conditions add (boundary-force unknowns and the nodes
 // they act on).  Rows are built once with their exact length, then handed to Tpetra's
-// FECrsGraph, which exports shared rows to their owners.  In assembly mode the matrix's
-// local column indices refer to the graph's column map, not to the overlap map.
+// FECrsGraph with global indices, which exports shared rows to their owners and makes the
+// column map afterwards (so it holds the columns that arrive with shared rows).  In
+// assembly mode the matrix's local column indices refer to that column map.
 
 #include <utility>
 #include <vector>

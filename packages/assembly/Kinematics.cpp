@@ -9,7 +9,7 @@ void trialDeformationGradient(Kinematics kinematics, const ParticleGridMap<Dim>&
                               typename ParticleSet<Dim>::Tensors& F) {
   auto rowPtr = map.rowPtr;
   auto grad = map.grad;
-  const bool small = kinematics == Kinematics::small;
+  const bool total = kinematics == Kinematics::totalLagrangian;
   Kokkos::parallel_for(
       "impm::trialF", RangePolicy<DefaultExecSpace>(0, map.numParticles()),
       KOKKOS_LAMBDA(const int p) {
@@ -21,7 +21,7 @@ void trialDeformationGradient(Kinematics kinematics, const ParticleGridMap<Dim>&
         for (int a = 0; a < Dim; ++a)
           for (int b = 0; b < Dim; ++b) {
             double value = Fn(p, a, b);
-            if (small) {
+            if (total) {
               value += H[a][b];
             } else {
               for (int c = 0; c < Dim; ++c)
@@ -36,7 +36,7 @@ template <int Dim>
 void stressRelativeToStepStart(Kinematics kinematics, const typename ParticleSet<Dim>::Tensors& Fn,
                                const typename ParticleSet<Dim>::Tensors& P, const Tangents<Dim>& A,
                                typename ParticleSet<Dim>::Tensors& Pn, Tangents<Dim>& An) {
-  if (kinematics == Kinematics::small) {
+  if (kinematics == Kinematics::totalLagrangian) {
     Kokkos::deep_copy(Pn, P);
     Kokkos::deep_copy(An, A);
     return;

@@ -1,14 +1,15 @@
 #pragma once
-// Deformation of the particles during a step.  The unknowns of a step are the grid
-// displacement increments du_i from the configuration at the start of the step (primer
-// 1.5.3: "the grid is reset").  Two kinematic assumptions:
-//  - small: the primer's 1-D small-deformation theory (eq. 1.54); the map stays at the
-//    reference positions and F = F^n + sum_i du_i (x) G_ip, i.e. eps = du/dX;
-//  - large: updated Lagrangian; the map is built at the positions x^n and
-//    F = (I + sum_i du_i (x) G_ip) F^n.
-// Forces are integrated over the configuration at the start of the step, with the first
-// Piola stress relative to it, P^n = P (F^n)^T / J^n, and its tangent
-// A^n_aBcD = A_aEcG F^n_BE F^n_DG / J^n (with small kinematics F^n is not used: P^n = P).
+// Deformation of the integration points during a step.  The unknowns of a step are the
+// grid displacement increments du_i (primer 1.5.3: the grid is reset every step).
+//  - total Lagrangian: the map stays at the reference positions X_p and
+//    F = F^n + sum_i du_i (x) G_ip (gradients with respect to X).  Forces are integrated over
+//    the reference configuration with P itself.  With the 1-D laws written in eps = F - 1
+//    this is the primer's small-deformation bar (eq. 1.54: eps = du/dx); it is also FEM on
+//    the grid as a fixed mesh.
+//  - updated Lagrangian (MPM): the map is built at the positions x^n of the start of the
+//    step and F = (I + sum_i du_i (x) G_ip) F^n.  Forces are integrated over the
+//    configuration at the start of the step with the first Piola stress relative to it,
+//    P^n = P (F^n)^T / J^n, and its tangent A^n_aBcD = A_aEcG F^n_BE F^n_DG / J^n.
 
 #include "basis/ParticleGridMap.hpp"
 #include "core/ParticleSet.hpp"
@@ -17,7 +18,7 @@
 
 namespace impm {
 
-enum class Kinematics { small, large };
+enum class Kinematics { totalLagrangian, updatedLagrangian };
 
 template <int Dim>
 using Tangents = typename Material<Dim>::Tangents;
@@ -36,7 +37,7 @@ void stressRelativeToStepStart(Kinematics kinematics, const typename ParticleSet
                                const typename ParticleSet<Dim>::Tensors& P, const Tangents<Dim>& A,
                                typename ParticleSet<Dim>::Tensors& Pn, Tangents<Dim>& An);
 
-// Determinant of a small matrix held in a Tensors view.
+// Determinant of the Dim x Dim matrix of particle p.
 template <int Dim>
 KOKKOS_INLINE_FUNCTION double determinant(const typename ParticleSet<Dim>::Tensors& F, int p) {
   if constexpr (Dim == 1)

@@ -126,7 +126,7 @@ void RobinEnd::commit(const StepContext<1>& ctx, const HostValues& x) {
   Teuchos::reduceAll(*ctx.dofs.ownedMap()->getComm(), Teuchos::REDUCE_SUM, 2, local, global);
   force_ = global[0];
   displacement_ += global[1];
-  if (kinematics_ == Kinematics::large)
+  if (kinematics_ == Kinematics::updatedLagrangian)
     position_ += global[1];
 }
 

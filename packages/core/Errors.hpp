@@ -26,4 +26,8 @@ class NumericalError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The line of a Trilinos exception's text that says what went wrong (the text also lists
+// source files, line numbers and throw counts).
+std::string trilinosMessage(const std::string& what);
+
 }  // namespace impm

@@ -2,6 +2,7 @@
 
 #include <muParser.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -30,6 +31,13 @@ bool parseNumber(const std::string& text, double& value) {
 
 }  // namespace
 
+std::string Formula::allowedText() const {
+  std::string allowed;
+  for (const auto& v : variables_)
+    allowed += (allowed.empty() ? "" : ", ") + v;
+  return allowed.empty() ? "none" : allowed;
+}
+
 Formula::Formula(double value) : expression_(std::to_string(value)), constant_(value) {}
 
 Formula::Formula(const std::string& expression, const std::vector<std::string>& variables)
@@ -44,16 +52,17 @@ Formula::Formula(const std::string& expression, const std::vector<std::string>& 
     for (std::size_t k = 0; k < variables.size(); ++k)
       p->parser.DefineVar(variables[k], &p->values[k]);
     p->parser.SetExpr(expression);
+    // GetUsedVar parses the expression and lists every name it uses, defined or not.
     for (const auto& used : p->parser.GetUsedVar())
       p->used.push_back(used.first);
   } catch (mu::Parser::exception_type& e) {
-    std::string allowed;
-    for (const auto& v : variables)
-      allowed += (allowed.empty() ? "" : ", ") + v;
     throw InputError("", "cannot read formula '" + expression + "': " + e.GetMsg() +
-                             " (variables allowed here: " + (allowed.empty() ? "none" : allowed) +
-                             ")");
+                             " (variables allowed here: " + allowedText() + ")");
   }
+  for (const auto& used : p->used)
+    if (std::find(variables.begin(), variables.end(), used) == variables.end())
+      throw InputError("", "formula '" + expression + "' uses '" + used +
+                               "', which is not a variable here (allowed: " + allowedText() + ")");
   parser_ = p;
 }
 

@@ -31,6 +31,7 @@ class Formula {
 
  private:
   struct Parser;
+  std::string allowedText() const;
   std::string expression_;
   double constant_ = 0.0;
   std::vector<std::string> variables_;

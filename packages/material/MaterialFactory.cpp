@@ -29,6 +29,7 @@ Entry<Dim> entry() {
 template <int Dim>
 const std::vector<Entry<Dim>>& registry();
 
+// The registration lines: one per model.
 template <>
 const std::vector<Entry<1>>& registry<1>() {
   static const std::vector<Entry<1>> models = {
@@ -43,6 +44,15 @@ const std::vector<Entry<2>>& registry<2>() {
   return models;
 }
 
+template <int Dim>
+void addVariants(Teuchos::ParameterList& valid, std::vector<std::string>& models) {
+  for (const auto& e : registry<Dim>()) {
+    models.push_back(e.model);
+    valid.sublist("[Model=" + e.model + "]", false, std::to_string(Dim) + "-D model")
+        .setParameters(e.validParameters());
+  }
+}
+
 }  // namespace
 
 template <int Dim>
@@ -53,16 +63,16 @@ std::vector<std::string> materialModels() {
   return names;
 }
 
-template <int Dim>
 Teuchos::ParameterList materialValidParameters() {
+  Teuchos::ParameterList variants;
+  std::vector<std::string> models;
+  addVariants<1>(variants, models);
+  addVariants<2>(variants, models);
   Teuchos::ParameterList valid;
-  const auto models = materialModels<Dim>();
-  declareChoice(valid, "Model", models.empty() ? "" : models.front(), models, "Constitutive model",
-                true);
+  declareChoice(valid, "Model", models.front(), models, "Constitutive model", true);
   declareDouble(valid, "Density", 1.0, "Mass density in the reference configuration",
                 Bounds::positive());
-  for (const auto& e : registry<Dim>())
-    valid.sublist("[Model=" + e.model + "]") = e.validParameters();
+  valid.setParameters(variants);
   return valid;
 }
 
@@ -73,13 +83,13 @@ std::shared_ptr<Material<Dim>> createMaterial(const std::string& name,
   for (const auto& e : registry<Dim>())
     if (e.model == model)
       return e.create(name, params);
-  throw InputError("Materials/" + name + "/Model", "unknown model '" + model + "'");
+  throw InputError("Materials/" + name + "/Model",
+                   "model '" + model + "' is not a " + std::to_string(Dim) +
+                       "-D model, and this deck's grid is " + std::to_string(Dim) + "-D");
 }
 
 template std::vector<std::string> materialModels<1>();
 template std::vector<std::string> materialModels<2>();
-template Teuchos::ParameterList materialValidParameters<1>();
-template Teuchos::ParameterList materialValidParameters<2>();
 template std::shared_ptr<Material<1>> createMaterial<1>(const std::string&,
                                                         const Teuchos::ParameterList&);
 template std::shared_ptr<Material<2>> createMaterial<2>(const std::string&,

@@ -16,8 +16,8 @@ namespace impm {
 template <int Dim>
 std::vector<std::string> materialModels();
 
-// Valid parameters of one Materials/<name> sublist.
-template <int Dim>
+// Valid parameters of one Materials/<name> sublist: the models of every dimension, so that
+// one list documents them all; createMaterial<Dim> rejects a model of another dimension.
 Teuchos::ParameterList materialValidParameters();
 
 template <int Dim>

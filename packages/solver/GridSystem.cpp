@@ -3,6 +3,10 @@
 #include "assembly/EntryDofs.hpp"
 #include "assembly/Forces.hpp"
 #include "assembly/Graph.hpp"
+#include "core/Collective.hpp"
+#include "core/Errors.hpp"
+
+#include <sstream>
 
 namespace impm {
 
@@ -21,6 +25,16 @@ DofMap<Dim> numberUnknowns(const NodeOwnership<Dim>& ownership, const ParticleGr
     c->prepare(ownership, extras, touched);
   }
   return DofMap<Dim>(ownership, std::move(touched), extras);
+}
+
+// The map, built on every rank; a particle outside the grid on one rank stops all of them.
+template <int Dim>
+ParticleGridMap<Dim> buildMapCollectively(const NodeOwnership<Dim>& ownership, Method method,
+                                          const ParticleSet<Dim>& particles) {
+  ParticleGridMap<Dim> map;
+  collectively(*ownership.comm(),
+               [&] { map = buildParticleGridMap(method, ownership.grid(), particles); });
+  return map;
 }
 
 template <class View>
@@ -42,12 +56,13 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
       contributions_(contributions),
       time_(time),
       loadFactor_(loadFactor),
-      map_(buildParticleGridMap(method, ownership.grid(), particles)),
+      map_(buildMapCollectively(ownership, method, particles)),
       dofs_(numberUnknowns(ownership, map_, contributions, firstExtra_)) {
   entryDofs_ = impm::entryDofs(map_, *dofs_.overlapMap());
   std::vector<std::pair<GO, GO>> couplings;
   for (std::size_t c = 0; c < contributions_.size(); ++c)
     contributions_[c]->couplings(context(static_cast<int>(c)), couplings);
+  checkEveryActiveNodeIsIntegrated();
   graph_ = buildGraph(map_, entryDofs_, dofs_, couplings);
   entryCols_ = impm::entryDofs(map_, *graph_->getColMap());
   importer_ = Teuchos::rcp(new Import(dofs_.ownedMap(), dofs_.overlapMap()));
@@ -57,6 +72,40 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
   Pn_ = typename ParticleSet<Dim>::Tensors("P relative to step start", n);
   A_ = Tangents<Dim>("A", n);
   An_ = Tangents<Dim>("A relative to step start", n);
+}
+
+template <int Dim>
+void GridSystem<Dim>::checkEveryActiveNodeIsIntegrated() const {
+  // Nodes only a boundary condition reaches would have empty rows: mark the nodes the
+  // integration points touch and bring the marks to the owners.
+  Vector marks(dofs_.overlapMap());
+  {
+    auto local = marks.getLocalViewHost(Tpetra::Access::ReadWrite);
+    auto lids = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), entryDofs_);
+    for (std::size_t k = 0; k < lids.extent(0); ++k)
+      local(lids(k), 0) = 1.0;
+  }
+  Vector owned(dofs_.ownedMap());
+  owned.doExport(marks, Export(dofs_.overlapMap(), dofs_.ownedMap()), Tpetra::ADD);
+  collectively(*dofs_.ownedMap()->getComm(), [&] {
+    auto values = owned.getData();
+    const auto& map = *dofs_.ownedMap();
+    for (decltype(values.size()) k = 0; k < values.size(); ++k) {
+      const GO dof = map.getGlobalElement(static_cast<LO>(k));
+      if (values[k] > 0.0 || dofs_.isExtraDof(dof))
+        continue;
+      int idx[Dim];
+      grid_.nodeIndex(dof / Dim, idx);
+      std::ostringstream msg;
+      msg << "grid node " << dof / Dim << " at x = " << grid_.nodeCoord(0, idx[0]);
+      if (Dim > 1)
+        msg << ", y = " << grid_.nodeCoord(1, idx[1]);
+      msg << " is reached by a boundary condition but by no integration point, so its row of "
+             "the system is empty (classic MPM does this when a body's end lies in a cell "
+             "that holds no particle centre); use gimp or cpdi, or more particles per cell";
+      throw NumericalError(msg.str());
+    }
+  });
 }
 
 template <int Dim>
@@ -92,8 +141,10 @@ void GridSystem<Dim>::updateStress(const Vector& x) {
     auto du = xo->getLocalViewDevice(Tpetra::Access::ReadOnly);
     trialDeformationGradient<Dim>(kinematics_, map_, entryDofs_, du, particles_.F, F_);
   }
-  for (std::size_t m = 0; m < materials_.size(); ++m)
-    materials_[m]->firstPiola(particles_, F_, static_cast<int>(m), P_, A_);
+  collectively(*dofs_.ownedMap()->getComm(), [&] {
+    for (std::size_t m = 0; m < materials_.size(); ++m)
+      materials_[m]->firstPiola(particles_, F_, static_cast<int>(m), P_, A_);
+  });
   stressRelativeToStepStart<Dim>(kinematics_, particles_.F, P_, A_, Pn_, An_);
 }
 

@@ -49,6 +49,7 @@ class GridSystem : public ResidualModel {
 
  private:
   void updateStress(const Vector& x);
+  void checkEveryActiveNodeIsIntegrated() const;
 
   const GridGeometry<Dim> grid_;
   Kinematics kinematics_;

@@ -8,32 +8,11 @@
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Thyra_VectorStdOps.hpp>
 
-#include <sstream>
-
 #include "core/Errors.hpp"
 
 namespace impm {
 
 namespace {
-
-// First meaningful line of a Trilinos exception text (they span many lines).
-std::string firstLine(const std::string& text) {
-  std::istringstream in(text);
-  std::string line, best;
-  while (std::getline(in, line)) {
-    if (line.find("Error,") != std::string::npos || line.find("Error!") != std::string::npos ||
-        line.find("error") != std::string::npos) {
-      best = line;
-      break;
-    }
-    if (best.empty() && !line.empty() && line.find(".cpp") == std::string::npos &&
-        line.find(".hpp") == std::string::npos && line.find("Throw") == std::string::npos)
-      best = line;
-  }
-  while (!best.empty() && (best.front() == ' ' || best.front() == '\t'))
-    best.erase(0, 1);
-  return best.empty() ? text.substr(0, 200) : best;
-}
 
 void solveOneByOne(Thyra::LinearOpWithSolveFactoryBase<double>& lows,
                    const Teuchos::RCP<const Comm>& comm) {
@@ -92,7 +71,7 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolveStrat
     lows = builder.createLinearSolveStrategy("");
     solveOneByOne(*lows, comm);
   } catch (const std::exception& e) {
-    throw InputError(path, "Stratimikos rejected the list: " + firstLine(e.what()));
+    throw InputError(path, "Stratimikos rejected the list: " + trilinosMessage(e.what()));
   }
   return lows;
 }

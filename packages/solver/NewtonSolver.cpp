@@ -10,6 +10,9 @@
 #include <cmath>
 #include <iomanip>
 #include <ostream>
+#include <sstream>
+
+#include "core/Errors.hpp"
 
 #include "core/Parameters.hpp"
 #include "solver/LinearSolver.hpp"
@@ -131,14 +134,22 @@ NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vecto
       .set<Teuchos::RCP<NOX::Observer>>("Observer",
                                         Teuchos::rcp(new IterationRecorder(report, log, indent_)));
   auto solver = NOX::Solver::buildSolver(group, tests, params);
-  const StatusType status = solver->solve();
+  StatusType status = Unconverged;
+  try {
+    status = solver->solve();
+  } catch (const NumericalError& e) {
+    report.failure = e.what();
+  } catch (const std::exception& e) {
+    // Belos and Ifpack2 report breakdowns (NaN residuals, singular factors) by throwing.
+    report.failure = "linear solver failure: " + trilinosMessage(e.what());
+  }
 
   const auto& solution = dynamic_cast<const NOX::Thyra::Vector&>(solver->getSolutionGroup().getX());
   auto tpetra = Thyra::TpetraOperatorVectorExtraction<double, LO, GO, Node>::getConstTpetraVector(
       solution.getThyraRCPVector());
   Tpetra::deep_copy(x, *tpetra);
   report.converged = status == Converged;
-  if (!report.converged) {
+  if (!report.converged && report.failure.empty()) {
     const double last = report.residualNorms.back();
     report.failure = !std::isfinite(last) ? "the residual is not finite"
                      : report.iterations() >= maxIterations_

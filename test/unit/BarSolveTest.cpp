@@ -52,7 +52,7 @@ std::shared_ptr<Contribution<1>> robin(const std::string& end, double a, double 
   p.set("Body", std::string("bar")), p.set("End", end);
   p.set("alpha", a), p.set("beta", b), p.set("gamma", g);
   validateParameters(p, RobinEnd::validParameters());
-  return std::make_shared<RobinEnd>(end, p, at, Kinematics::small);
+  return std::make_shared<RobinEnd>(end, p, at, Kinematics::totalLagrangian);
 }
 
 TEST(BarSolve, PatchTestIsExact) {
@@ -62,13 +62,13 @@ TEST(BarSolve, PatchTestIsExact) {
     auto ps = barPoints(own, method, Formula(1.0));
     Teuchos::ParameterList mat;
     mat.set("Model", std::string("linear")), mat.set("E", std::string("1 - x/2"));
-    validateParameters(mat, materialValidParameters<1>());
+    validateParameters(mat, materialValidParameters());
     std::vector<std::shared_ptr<Material<1>>> materials = {createMaterial<1>("steel", mat)};
     materials[0]->initialize(ps, 0);
     std::vector<std::shared_ptr<Contribution<1>>> bcs = {robin("left", 0, 1, 0, 0.0),
                                                          robin("right", 1, 0, 1, 1.0)};
     auto system = Teuchos::rcp(
-        new GridSystem<1>(own, method, Kinematics::small, ps, materials, bcs, 1.0, 1.0));
+        new GridSystem<1>(own, method, Kinematics::totalLagrangian, ps, materials, bcs, 1.0, 1.0));
     Teuchos::ParameterList solverParams;
     validateParameters(solverParams, NewtonSolver::validParameters());
     NewtonSolver newton(solverParams, comm);

@@ -1,0 +1,135 @@
+// impm: the driver.  Reads an XML deck, checks it, runs it, writes the outputs.
+//
+//   impm [--output-dir DIR] [--set Path/To/Param=value]... deck.xml
+//   impm --list-parameters
+//   impm --help
+//
+// Exit status: 0 success; 1 bad input (nothing written); 2 bad command line;
+// 3 numerical failure (outputs so far are readable); 4 a verification check failed.
+
+#include <Tpetra_Core.hpp>
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "app/AppParameters.hpp"
+#include "app/Simulation.hpp"
+#include "core/Collective.hpp"
+#include "core/Errors.hpp"
+#include "core/Parameters.hpp"
+#include "io/InputDeck.hpp"
+
+namespace {
+
+const char* kUsage =
+    "usage: impm [--output-dir DIR] [--set Path/To/Param=value]... deck.xml\n"
+    "       impm --list-parameters\n"
+    "       impm --help\n"
+    "\n"
+    "Runs the implicit MPM/FEM problem described by the Teuchos XML deck.\n"
+    "  --output-dir DIR   write the outputs to DIR (default: the deck's Output/Directory)\n"
+    "  --set P=V          override parameter P (a path such as Grid/Cells) with value V,\n"
+    "                     typed like P; arrays in Teuchos syntax: --set Grid/Cells={64}\n"
+    "  --list-parameters  print every deck parameter with its type, default and meaning\n"
+    "Exit status: 0 success, 1 bad input, 2 bad command line, 3 numerical failure,\n"
+    "4 failed verification check.\n";
+
+struct Arguments {
+  std::string deck, outputDirectory;
+  std::vector<impm::Override> overrides;
+  bool help = false, list = false;
+};
+
+Arguments parse(int argc, char** argv) {
+  Arguments a;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&](const std::string& option) {
+      if (i + 1 >= argc)
+        throw impm::InputError("", option + " needs a value");
+      return std::string(argv[++i]);
+    };
+    if (arg == "--help" || arg == "-h")
+      a.help = true;
+    else if (arg == "--list-parameters")
+      a.list = true;
+    else if (arg == "--output-dir")
+      a.outputDirectory = value(arg);
+    else if (arg.rfind("--output-dir=", 0) == 0)
+      a.outputDirectory = arg.substr(13);
+    else if (arg == "--set")
+      a.overrides.push_back(impm::parseOverride(value(arg)));
+    else if (arg.rfind("--set=", 0) == 0)
+      a.overrides.push_back(impm::parseOverride(arg.substr(6)));
+    else if (!arg.empty() && arg[0] == '-')
+      throw impm::InputError("", "unknown option " + arg);
+    else if (a.deck.empty())
+      a.deck = arg;
+    else
+      throw impm::InputError("", "more than one deck given (" + a.deck + ", " + arg + ")");
+  }
+  if (!a.help && !a.list && a.deck.empty())
+    throw impm::InputError("", "no deck given");
+  return a;
+}
+
+template <int Dim>
+int runDeck(const Teuchos::ParameterList& deck, const Arguments& args,
+            const Teuchos::RCP<const impm::Comm>& comm) {
+  impm::Simulation<Dim> simulation(deck, args.deck, args.outputDirectory, comm);
+  const auto failures = simulation.run();
+  if (failures.empty())
+    return 0;
+  if (comm->getRank() == 0)
+    for (const auto& f : failures)
+      std::cerr << "impm: verification failed: " << f << "\n";
+  return 4;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Tpetra::ScopeGuard scope(&argc, &argv);
+  auto comm = Tpetra::getDefaultComm();
+  const bool root = comm->getRank() == 0;
+  Arguments args;
+  try {
+    args = parse(argc, argv);
+  } catch (const impm::InputError& e) {
+    if (root)
+      std::cerr << "impm: error: " << e.what() << "\n" << kUsage;
+    return 2;
+  }
+  if (args.help) {
+    if (root)
+      std::cout << kUsage;
+    return 0;
+  }
+  const auto valid = impm::deckValidParameters();
+  if (args.list) {
+    if (root)
+      impm::listParameters(valid, std::cout);
+    return 0;
+  }
+  try {
+    Teuchos::ParameterList deck;
+    impm::collectively(*comm, [&] { deck = impm::loadDeck(args.deck, args.overrides, valid); });
+    const auto dim = deck.sublist("Grid").get<Teuchos::Array<int>>("Cells").size();
+    if (dim != 1)
+      throw impm::InputError("Grid/Cells", "only 1-D grids are implemented");
+    return runDeck<1>(deck, args, comm);
+  } catch (const impm::InputError& e) {
+    if (root)
+      std::cerr << "impm: error: " << args.deck << ": " << e.what() << "\n";
+    return 1;
+  } catch (const impm::NumericalError& e) {
+    if (root)
+      std::cerr << "impm: numerical failure: " << e.what() << "\n";
+    return 3;
+  } catch (const std::exception& e) {
+    if (root)
+      std::cerr << "impm: error: " << e.what() << "\n";
+    return 3;
+  }
+}

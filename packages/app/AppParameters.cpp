@@ -1,0 +1,78 @@
+#include "app/AppParameters.hpp"
+
+#include "app/Bodies.hpp"
+#include "app/BoundaryConditions.hpp"
+#include "app/Output.hpp"
+#include "app/Verification.hpp"
+#include "basis/Method.hpp"
+#include "core/Parameters.hpp"
+#include "material/MaterialFactory.hpp"
+#include "solver/NewtonSolver.hpp"
+
+namespace impm {
+
+namespace {
+
+Teuchos::ParameterList discretizationParameters() {
+  Teuchos::ParameterList valid;
+  declareChoice(valid, "Method", "gimp", methodNames(),
+                "fem: Gauss points of the grid cells (2 per cell and direction); mpm: classic "
+                "MPM, single-point weights at particle centres; gimp: exact average of the "
+                "tent functions over each particle; cpdi: convected particle domain "
+                "interpolation",
+                true);
+  declareChoice(valid, "Kinematics", "auto", {"auto", "total Lagrangian", "updated Lagrangian"},
+                "total Lagrangian: integration points stay at their reference positions (FEM; "
+                "the primer's small-deformation bar); updated Lagrangian: particles move "
+                "through the grid (MPM).  auto: total for fem, updated otherwise");
+  return valid;
+}
+
+Teuchos::ParameterList gridParameters() {
+  Teuchos::ParameterList valid;
+  declareIntArray(valid, "Cells", {16}, {1, 2},
+                  "Number of cells along each direction; its length sets the dimension",
+                  Bounds::atLeast(1), true);
+  declareDoubleArray(valid, "Length", {1.0}, {1, 2}, "Size of the grid along each direction",
+                     Bounds::positive(), true);
+  declareDoubleArray(valid, "Origin", {}, {0, 1, 2},
+                     "Position of the grid's lower corner (empty: the origin)");
+  return valid;
+}
+
+Teuchos::ParameterList timeIntegrationParameters() {
+  Teuchos::ParameterList valid;
+  declareChoice(valid, "Type", "static", {"static"},
+                "static: quasi-static load stepping (no inertia)");
+  declareDouble(valid, "Final Time", 1.0,
+                "Time at which formulas of t are evaluated in static runs", Bounds::positive());
+  auto& statics = valid.sublist("[Type=static]");
+  declareInt(statics, "Load Steps", 1, "Equal load increments from 0 to the full loads",
+             Bounds::atLeast(1));
+  declareDouble(statics, "Minimum Load Increment", 1e-4,
+                "Smallest load increment a failed step may be cut to", Bounds::positive());
+  return valid;
+}
+
+}  // namespace
+
+Teuchos::ParameterList deckValidParameters() {
+  Teuchos::ParameterList valid("impm");
+  valid.sublist("Discretization", false, "How the weak form is integrated") =
+      discretizationParameters();
+  valid.sublist("Grid", false, "The background grid") = gridParameters();
+  valid.sublist("Materials", false, "Constitutive models, one sublist each").sublist("<name>") =
+      materialValidParameters();
+  valid.sublist("Bodies", false, "Bodies, one sublist each").sublist("<name>") =
+      bodyValidParameters();
+  valid.sublist("Boundary Conditions", false, "Boundary conditions, one sublist each")
+      .sublist("<name>") = boundaryConditionValidParameters();
+  valid.sublist("Time Integration") = timeIntegrationParameters();
+  valid.sublist("Solver", false, "Newton and linear solvers") = NewtonSolver::validParameters();
+  valid.sublist("Output") = outputValidParameters();
+  valid.sublist("Verification", false, "Checks against known answers") =
+      verificationValidParameters();
+  return valid;
+}
+
+}  // namespace impm

@@ -1,0 +1,58 @@
+#pragma once
+// Bodies from the deck, turned into integration points: material points filling the body
+// (mpm, gimp, cpdi) or Gauss points of the grid cells inside the body (fem).  Every rank
+// generates the same global list (so particle ids do not depend on the number of ranks)
+// and keeps the points that lie in its cells.
+
+#include <Teuchos_ParameterList.hpp>
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "basis/Method.hpp"
+#include "core/Decomposition.hpp"
+#include "core/Formula.hpp"
+#include "material/Material.hpp"
+
+namespace impm {
+
+Teuchos::ParameterList bodyValidParameters();
+
+struct Body {
+  std::string name;
+  int material = 0;    // index into the deck's Materials
+  double lower = 0.0;  // 1-D: the interval [lower, upper]
+  double upper = 0.0;
+  int particlesPerCell = 2;
+  Formula section;  // A(x)
+  Formula load;     // distributed load f(x, X, t)
+};
+
+template <int Dim>
+class Bodies {
+ public:
+  // Reads and checks Bodies/<name>; material names resolve to indices.  Throws InputError.
+  Bodies(const Teuchos::ParameterList& deck, const std::vector<std::string>& materialNames,
+         const GridGeometry<Dim>& grid);
+
+  const std::vector<Body>& list() const { return bodies_; }
+  // Index of the body called `name`, or -1.
+  int find(const std::string& name) const;
+
+  // The integration points of every body that lie on `rank`.
+  ParticleSet<Dim> createParticles(
+      Method method, const Decomposition<Dim>& decomposition, int rank,
+      const std::vector<std::shared_ptr<Material<Dim>>>& materials) const;
+
+  // Sets particles.force to the distributed loads at `time` (force per unit length times
+  // the particle length in 1-D).
+  void applyLoads(ParticleSet<Dim>& particles, double time) const;
+
+ private:
+  GridGeometry<Dim> grid_;
+  std::vector<Body> bodies_;
+};
+
+}  // namespace impm

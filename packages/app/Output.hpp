@@ -1,0 +1,66 @@
+#pragma once
+// What a run writes (the output contract of doc/design.md), all gathered to rank 0 so that
+// the files do not depend on the number of ranks:
+//  <prefix>_grid.exo       grid nodes and cells (BAR2 / QUAD4) with nodal fields
+//  <prefix>_particles.exo  one SPHERE element per particle at its reference position, with
+//                          displacementX... as nodal fields (ParaView moves the points) and
+//                          the other particle fields as element variables
+//  <prefix>_particles.csv  the particles at the last output step, sorted by id
+//  <prefix>_history.csv    one row per step
+
+#include <Teuchos_ParameterList.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/NodeOwnership.hpp"
+#include "core/ParticleSet.hpp"
+#include "io/CsvFile.hpp"
+#include "io/ExodusFile.hpp"
+
+namespace impm {
+
+Teuchos::ParameterList outputValidParameters();
+
+// Particle fields on rank 0, sorted by id (empty elsewhere).  Collective.
+struct ParticleTable {
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> columns;
+  const std::vector<double>& column(const std::string& name) const;
+};
+template <int Dim>
+ParticleTable gatherParticles(const ParticleSet<Dim>& particles,
+                              const Teuchos::RCP<const Comm>& comm, GlobalId totalParticles);
+
+template <int Dim>
+class Output {
+ public:
+  // Creates the directory and the files (rank 0).  Collective.
+  Output(const Teuchos::ParameterList& params, const std::string& directory,
+         const std::string& prefix, const NodeOwnership<Dim>& ownership,
+         const ParticleSet<Dim>& particles, GlobalId totalParticles,
+         const std::vector<std::string>& historyColumns,
+         const std::vector<std::string>& globalNames);
+
+  bool due(int step) const { return step % every_ == 0; }
+  // Particle and grid fields at `time`.  gridDisplacement: Dim columns on the node map.
+  // Collective.
+  void writeFields(double time, const ParticleSet<Dim>& particles,
+                   const MultiVector& gridDisplacement, const std::vector<double>& globals);
+  void appendHistory(const std::vector<double>& row) const;
+  // Paths of the files written, for the user.
+  std::vector<std::string> files() const;
+
+ private:
+  const NodeOwnership<Dim>& ownership_;
+  bool root_;
+  int every_;
+  bool exodus_, csv_;
+  GlobalId totalParticles_;
+  std::string directory_, prefix_;
+  std::unique_ptr<ExodusFile> gridFile_, particleFile_;
+  std::unique_ptr<CsvHistory> history_;
+};
+
+}  // namespace impm

@@ -1,0 +1,58 @@
+#pragma once
+// A run: the validated deck turned into grid, integration points, materials, boundary
+// conditions and solvers, then stepped, written and checked.  Everything that can be
+// wrong with the deck is found by the constructor, before any file is written.
+
+#include <Teuchos_ParameterList.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/Bodies.hpp"
+#include "app/Output.hpp"
+#include "app/Verification.hpp"
+#include "assembly/Kinematics.hpp"
+#include "solver/Contribution.hpp"
+#include "solver/NewtonSolver.hpp"
+
+namespace impm {
+
+class RobinEnd;
+
+template <int Dim>
+class Simulation {
+ public:
+  // Collective; throws InputError (on every rank) when the deck is inconsistent.
+  Simulation(const Teuchos::ParameterList& deck, const std::string& deckFile,
+             const std::string& outputDirectory, const Teuchos::RCP<const Comm>& comm);
+  ~Simulation();
+
+  // Runs to the end; returns the failed verification checks (empty: all passed).  Throws
+  // NumericalError when the computation cannot go on.
+  std::vector<std::string> run();
+
+  const ParticleSet<Dim>& particles() const { return particles_; }
+
+ private:
+  void setUp(const Teuchos::ParameterList& deck);
+  std::vector<double> reactions() const;
+
+  Teuchos::RCP<const Comm> comm_;
+  Teuchos::ParameterList deck_;
+  std::string deckFile_, outputDirectory_, prefix_;
+  std::unique_ptr<NodeOwnership<Dim>> ownership_;
+  Method method_;
+  Kinematics kinematics_;
+  std::vector<std::string> materialNames_;
+  std::vector<std::shared_ptr<Material<Dim>>> materials_;
+  std::unique_ptr<Bodies<Dim>> bodies_;
+  ParticleSet<Dim> particles_;
+  GlobalId totalParticles_ = 0;
+  std::vector<std::shared_ptr<Contribution<Dim>>> conditions_;
+  std::shared_ptr<RobinEnd> left_, right_;  // the ends whose forces are F0 and FL
+  std::unique_ptr<NewtonSolver> newton_;
+  std::unique_ptr<Verification> verification_;
+};
+
+}  // namespace impm

@@ -1,0 +1,19 @@
+#pragma once
+// Grid to particles after a converged step: the displacement increment is mapped with
+// u_p = sum_i phi_ip u_i (eq. 1.23) and the particle state is advanced:
+//   u_p += sum_i phi_ip du_i,  F_p = trial F,  stress = P F^T / J (Cauchy; in 1-D the axial
+//   force per unit section);
+// with updated-Lagrangian kinematics the particles also move and deform:
+//   x_p += sum_i phi_ip du_i,  V_p = J V_p0,  domain = F domain0 (eq. 1.36 CPDI vectors).
+
+#include "assembly/Kinematics.hpp"
+
+namespace impm {
+
+template <int Dim>
+void updateParticles(Kinematics kinematics, const ParticleGridMap<Dim>& map,
+                     const Kokkos::View<LO*>& entryDofs, const LocalValues& du,
+                     const typename ParticleSet<Dim>::Tensors& F,
+                     const typename ParticleSet<Dim>::Tensors& P, ParticleSet<Dim>& particles);
+
+}  // namespace impm

@@ -1,0 +1,56 @@
+#include "core/Collective.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include "core/Errors.hpp"
+
+namespace impm {
+
+namespace {
+
+enum Kind { kNone = 0, kInput = 1, kNumerical = 2, kOther = 3 };
+
+void broadcastString(const Comm& comm, int root, std::string& s) {
+  int n = static_cast<int>(s.size());
+  Teuchos::broadcast(comm, root, 1, &n);
+  s.resize(n);
+  if (n)
+    Teuchos::broadcast(comm, root, n, &s[0]);
+}
+
+}  // namespace
+
+void collectively(const Comm& comm, const std::function<void()>& phase) {
+  int kind = kNone;
+  std::string path, message;
+  try {
+    phase();
+  } catch (const InputError& e) {
+    kind = kInput, path = e.path(), message = e.what();
+  } catch (const NumericalError& e) {
+    kind = kNumerical, message = e.what();
+  } catch (const std::exception& e) {
+    kind = kOther, message = e.what();
+  }
+  const int size = comm.getSize();
+  const int mine = kind == kNone ? size : comm.getRank();
+  int first = size;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, mine, Teuchos::outArg(first));
+  if (first == size)
+    return;
+  Teuchos::broadcast(comm, first, 1, &kind);
+  broadcastString(comm, first, path);
+  broadcastString(comm, first, message);
+  if (kind == kInput) {
+    // InputError's what() already starts with the path: keep the bare message.
+    const std::string prefix = path.empty() ? "" : path + ": ";
+    throw InputError(path, message.compare(0, prefix.size(), prefix) == 0
+                               ? message.substr(prefix.size())
+                               : message);
+  }
+  if (kind == kNumerical)
+    throw NumericalError(message);
+  throw std::runtime_error(message);
+}
+
+}  // namespace impm

@@ -1,0 +1,103 @@
+#include "io/ExodusFile.hpp"
+
+#include <exodusII.h>
+
+#include <stdexcept>
+
+namespace impm {
+
+namespace {
+
+void check(int status, const std::string& path, const char* what) {
+  if (status < 0)
+    throw std::runtime_error("cannot write Exodus file " + path + " (" + what + ")");
+}
+
+std::vector<char*> cStrings(const std::vector<std::string>& names) {
+  std::vector<char*> out;
+  for (const auto& n : names)
+    out.push_back(const_cast<char*>(n.c_str()));
+  return out;
+}
+
+int openForAppend(const std::string& path) {
+  int cpuWordSize = sizeof(double), ioWordSize = 0;
+  float version = 0;
+  const int id = ex_open(path.c_str(), EX_WRITE, &cpuWordSize, &ioWordSize, &version);
+  check(id, path, "open");
+  return id;
+}
+
+void putVariableNames(int id, ex_entity_type type, const std::vector<std::string>& names,
+                      const std::string& path) {
+  if (names.empty())
+    return;
+  check(ex_put_variable_param(id, type, static_cast<int>(names.size())), path, "variable count");
+  auto c = cStrings(names);
+  check(ex_put_variable_names(id, type, static_cast<int>(names.size()), c.data()), path,
+        "variable names");
+}
+
+}  // namespace
+
+ExodusFile::ExodusFile(const std::string& path, const std::string& title, const ExodusMesh& mesh,
+                       const std::vector<std::string>& nodalVariables,
+                       const std::vector<std::string>& elementVariables,
+                       const std::vector<std::string>& globalVariables)
+    : path_(path),
+      numNodes_(mesh.numNodes()),
+      numElements_(mesh.numElements()),
+      numNodal_(nodalVariables.size()),
+      numElement_(elementVariables.size()),
+      numGlobal_(globalVariables.size()) {
+  int cpuWordSize = sizeof(double), ioWordSize = sizeof(double);
+  const int id = ex_create(path.c_str(), EX_CLOBBER, &cpuWordSize, &ioWordSize);
+  check(id, path, "create");
+  check(ex_put_init(id, title.c_str(), mesh.dimension, static_cast<int64_t>(numNodes_),
+                    static_cast<int64_t>(numElements_), 1, 0, 0),
+        path, "init");
+  const double* c[3] = {nullptr, nullptr, nullptr};
+  for (int d = 0; d < mesh.dimension; ++d)
+    c[d] = mesh.coords[d].data();
+  check(ex_put_coord(id, c[0], c[1], c[2]), path, "coordinates");
+  std::vector<std::string> axes = {"x", "y", "z"};
+  axes.resize(mesh.dimension);
+  auto axisNames = cStrings(axes);
+  check(ex_put_coord_names(id, axisNames.data()), path, "coordinate names");
+  check(ex_put_block(id, EX_ELEM_BLOCK, 1, mesh.elementType.c_str(),
+                     static_cast<int64_t>(numElements_), mesh.nodesPerElement, 0, 0, 0),
+        path, "element block");
+  check(ex_put_conn(id, EX_ELEM_BLOCK, 1, mesh.connectivity.data(), nullptr, nullptr), path,
+        "connectivity");
+  if (!mesh.elementIds.empty())
+    check(ex_put_id_map(id, EX_ELEM_MAP, mesh.elementIds.data()), path, "element ids");
+  putVariableNames(id, EX_NODAL, nodalVariables, path);
+  putVariableNames(id, EX_ELEM_BLOCK, elementVariables, path);
+  putVariableNames(id, EX_GLOBAL, globalVariables, path);
+  check(ex_close(id), path, "close");
+}
+
+void ExodusFile::append(double time, const std::vector<std::vector<double>>& nodal,
+                        const std::vector<std::vector<double>>& element,
+                        const std::vector<double>& global) {
+  if (nodal.size() != numNodal_ || element.size() != numElement_ || global.size() != numGlobal_)
+    throw std::logic_error("Exodus output: wrong number of variables for " + path_);
+  const int id = openForAppend(path_);
+  const int step = steps_ + 1;
+  check(ex_put_time(id, step, &time), path_, "time");
+  for (std::size_t v = 0; v < numNodal_; ++v)
+    check(ex_put_var(id, step, EX_NODAL, static_cast<int>(v + 1), 1,
+                     static_cast<int64_t>(numNodes_), nodal[v].data()),
+          path_, "nodal variable");
+  for (std::size_t v = 0; v < numElement_; ++v)
+    check(ex_put_var(id, step, EX_ELEM_BLOCK, static_cast<int>(v + 1), 1,
+                     static_cast<int64_t>(numElements_), element[v].data()),
+          path_, "element variable");
+  if (numGlobal_)
+    check(ex_put_var(id, step, EX_GLOBAL, 1, 0, static_cast<int64_t>(numGlobal_), global.data()),
+          path_, "global variables");
+  check(ex_close(id), path_, "close");
+  steps_ = step;
+}
+
+}  // namespace impm

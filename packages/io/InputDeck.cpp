@@ -1,0 +1,72 @@
+#include "io/InputDeck.hpp"
+
+#include <Teuchos_XMLParameterListHelpers.hpp>
+
+#include <fstream>
+#include <sstream>
+
+#include "core/Errors.hpp"
+#include "core/Parameters.hpp"
+
+namespace impm {
+
+namespace {
+
+Teuchos::ParameterList readXml(const std::string& file) {
+  std::ifstream in(file);
+  if (!in)
+    throw InputError("", "cannot open the deck file");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string xml = text.str();
+  if (xml.find_first_not_of(" \t\r\n") == std::string::npos)
+    throw InputError("", "the deck file is empty");
+  try {
+    return *Teuchos::getParametersFromXmlString(xml);
+  } catch (const std::exception& e) {
+    throw InputError("", "malformed XML deck: " + trilinosMessage(e.what()));
+  }
+}
+
+void applyOverride(Teuchos::ParameterList& deck, const Override& o,
+                   const Teuchos::ParameterList& valid) {
+  const std::string where = "--set " + o.path;
+  Teuchos::ParameterEntry prototype;
+  if (!findValidEntry(valid, deck, o.path, prototype))
+    throw InputError(o.path, "unknown parameter (in " + where + ")");
+  Teuchos::ParameterEntry entry = parseLike(prototype, o.value, o.path);
+  Teuchos::ParameterList* list = &deck;
+  std::string rest = o.path;
+  for (auto slash = rest.find('/'); slash != std::string::npos; slash = rest.find('/')) {
+    list = &list->sublist(rest.substr(0, slash));
+    rest = rest.substr(slash + 1);
+  }
+  list->setEntry(rest, entry);
+}
+
+}  // namespace
+
+Override parseOverride(const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError("", "--set expects Path/To/Param=value, got '" + text + "'");
+  return Override{text.substr(0, eq), text.substr(eq + 1)};
+}
+
+Teuchos::ParameterList loadDeck(const std::string& file, const std::vector<Override>& overrides,
+                                const Teuchos::ParameterList& valid) {
+  Teuchos::ParameterList deck = readXml(file);
+  for (const auto& o : overrides)
+    applyOverride(deck, o, valid);
+  validateParameters(deck, valid);
+  return deck;
+}
+
+std::string deckStem(const std::string& file) {
+  std::string name =
+      file.substr(file.find_last_of('/') == std::string::npos ? 0 : file.find_last_of('/') + 1);
+  const auto dot = name.find_last_of('.');
+  return dot == std::string::npos || dot == 0 ? name : name.substr(0, dot);
+}
+
+}  // namespace impm

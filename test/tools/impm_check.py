@@ -1,0 +1,184 @@
+#!/usr/bin/env python3
+"""Checks that run the impm driver as a user would and judge its outputs.
+
+  convergence  run a deck at several grid sizes; assert the RMS error at each size and the
+               observed rate between successive sizes (PROBLEMS.md: r = log2(e_2h / e_h))
+  ranks        run a deck on several rank counts; assert the particle CSVs agree
+  fails        run a deck that must be rejected; assert the exit status, that the message
+               is printed, and that no output file was written
+
+Only the Python standard library is used.
+"""
+
+import argparse
+import csv
+import math
+import os
+import shlex
+import shutil
+import subprocess
+import sys
+import tempfile
+
+
+def run_impm(args, deck, out_dir, sets, np=1):
+    cmd = []
+    if np > 1:
+        cmd += shlex.split(args.mpiexec or "mpiexec") + [str(np)]
+    cmd += [args.impm, "--output-dir", out_dir]
+    for s in sets:
+        cmd += ["--set", s]
+    cmd.append(deck)
+    return subprocess.run(cmd, capture_output=True, text=True)
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    return rows
+
+
+def stem(deck):
+    return os.path.splitext(os.path.basename(deck))[0]
+
+
+def convergence(args):
+    errors, table = [], []
+    failures = []
+    for n in args.cells:
+        out = tempfile.mkdtemp(prefix="impm-conv-", dir=".")
+        sets = ["Grid/Cells={%d}" % n, "Discretization/Method=" + args.method,
+                "Verification/Maximum RMS Error=0", "Verification/Reaction Tolerance=0",
+                "Solver/Print Iterations=false"] + args.set
+        r = run_impm(args, args.deck, out, sets, args.np)
+        if r.returncode != 0:
+            print(r.stdout, r.stderr)
+            sys.exit("impm failed at %d cells" % n)
+        row = read_csv(os.path.join(out, stem(args.deck) + "_verification.csv"))[0]
+        shutil.rmtree(out)
+        e = float(row["rms_error"])
+        errors.append(e)
+        table.append((n, int(row["points"]), e, float(row["F0"]), float(row["FL"])))
+    print("%-6s %-7s %-12s %-6s %-20s %-20s" % ("cells", "points", "rms_error", "rate", "F0", "FL"))
+    for k, (n, pts, e, f0, fl) in enumerate(table):
+        rate = math.log(errors[k - 1] / e) / math.log(2) if k else float("nan")
+        print("%-6d %-7d %-12.4e %-6.3f %-20.15g %-20.15g" % (n, pts, e, rate, f0, fl))
+        if args.exact is not None:
+            if e > args.exact:
+                failures.append("RMS error %.4e at %d cells: not exact to %g" % (e, n, args.exact))
+        elif k and not (args.rate[0] <= rate <= args.rate[1]):
+            failures.append("rate %.3f between %d and %d cells is outside [%g, %g]"
+                            % (rate, table[k - 1][0], n, args.rate[0], args.rate[1]))
+        if args.max_error and e > args.max_error[k]:
+            failures.append("RMS error %.4e at %d cells is above %g" % (e, n, args.max_error[k]))
+        if args.min_error and e < args.min_error:
+            failures.append("RMS error %.4e at %d cells is below %g: the method was expected "
+                            "to be inexact here" % (e, n, args.min_error))
+        if args.reactions:
+            f0_exact, fl_exact, tol0, order = args.reactions
+            tol = tol0 / 2 ** (order * k)  # the bound shrinks with h^order
+            for name, value, exact in (("F0", f0, f0_exact), ("FL", fl, fl_exact)):
+                if abs(value - exact) > tol:
+                    failures.append("%s = %.15g at %d cells differs from %.15g by more than %g"
+                                    % (name, value, n, exact, tol))
+    for f in failures:
+        print("FAIL:", f)
+    sys.exit(1 if failures else 0)
+
+
+def ranks(args):
+    results = {}
+    for np in args.np:
+        out = tempfile.mkdtemp(prefix="impm-np%d-" % np, dir=".")
+        r = run_impm(args, args.deck, out, ["Solver/Print Iterations=false"] + args.set, np)
+        if r.returncode != 0:
+            print(r.stdout, r.stderr)
+            sys.exit("impm failed on %d ranks" % np)
+        results[np] = read_csv(os.path.join(out, stem(args.deck) + "_particles.csv"))
+        shutil.rmtree(out)
+    base_np = args.np[0]
+    base = results[base_np]
+    failures = []
+    columns = list(base[0].keys())
+    for np in args.np[1:]:
+        other = results[np]
+        if len(other) != len(base):
+            failures.append("%d particles on %d ranks, %d on %d" % (len(other), np, len(base), base_np))
+            continue
+        worst = 0.0
+        for c in columns:
+            a = [float(row[c]) for row in base]
+            b = [float(row[c]) for row in other]
+            scale = max(max(abs(v) for v in a), 1e-300)
+            diff = max(abs(x - y) for x, y in zip(a, b)) / scale
+            worst = max(worst, diff)
+            if diff > args.rtol:
+                failures.append("column %s differs by %.3e (relative to its largest value) between "
+                                "%d and %d ranks" % (c, diff, base_np, np))
+        print("%d ranks vs %d: largest relative difference %.3e over %d particles"
+              % (np, base_np, worst, len(base)))
+    for f in failures:
+        print("FAIL:", f)
+    sys.exit(1 if failures else 0)
+
+
+def fails(args):
+    out = os.path.join(tempfile.mkdtemp(prefix="impm-bad-", dir="."), "out")
+    r = run_impm(args, args.deck, out, args.set, args.np)
+    sys.stdout.write(r.stdout)
+    sys.stdout.write(r.stderr)
+    problems = []
+    if r.returncode != args.exit:
+        problems.append("exit status %d, expected %d" % (r.returncode, args.exit))
+    if os.path.exists(out) and os.listdir(out):
+        problems.append("output files were written: %s" % ", ".join(sorted(os.listdir(out))))
+    # impm's own lines (mpiexec adds its own when a rank exits with an error).
+    own = [l for l in r.stderr.splitlines() if l.startswith("impm:")]
+    if len(own) != 1 and args.exit == 1:
+        problems.append("the error is not one line (%d lines from impm)" % len(own))
+    shutil.rmtree(os.path.dirname(out))
+    for p in problems:
+        print("CHECK FAILED:", p)
+    sys.exit(1 if problems else 0)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--impm", required=True, help="the impm executable")
+    p.add_argument("--mpiexec", default="", help="MPI launcher up to the process count flag")
+    sub = p.add_subparsers(dest="check", required=True)
+
+    c = sub.add_parser("convergence")
+    c.add_argument("--deck", required=True)
+    c.add_argument("--method", required=True)
+    c.add_argument("--cells", type=int, nargs="+", required=True)
+    c.add_argument("--rate", type=float, nargs=2, metavar=("MIN", "MAX"),
+                   help="range of every observed rate")
+    c.add_argument("--exact", type=float,
+                   help="instead of rates: the RMS error must stay below this at every size")
+    c.add_argument("--max-error", type=float, nargs="+", help="largest RMS error at each size")
+    c.add_argument("--min-error", type=float, help="smallest RMS error expected (inexact methods)")
+    c.add_argument("--reactions", type=float, nargs=4, metavar=("F0", "FL", "TOL", "ORDER"),
+                   help="exact F0 and FL, the allowed error at the coarsest grid, and the "
+                        "order at which that bound shrinks (0: fixed)")
+    c.add_argument("--np", type=int, default=1)
+    c.add_argument("--set", action="append", default=[])
+
+    r = sub.add_parser("ranks")
+    r.add_argument("--deck", required=True)
+    r.add_argument("--np", type=int, nargs="+", required=True)
+    r.add_argument("--rtol", type=float, default=1e-10)
+    r.add_argument("--set", action="append", default=[])
+
+    f = sub.add_parser("fails")
+    f.add_argument("--deck", required=True)
+    f.add_argument("--exit", type=int, default=1)
+    f.add_argument("--np", type=int, default=1)
+    f.add_argument("--set", action="append", default=[])
+
+    args = p.parse_args()
+    {"convergence": convergence, "ranks": ranks, "fails": fails}[args.check](args)
+
+
+if __name__ == "__main__":
+    main()

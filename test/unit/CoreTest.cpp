@@ -1,0 +1,184 @@
+// core: formulas, parameter validation (one-line errors naming the path), the block
+// decomposition, the DOF maps, and agreement on failures across ranks.
+
+#include <gtest/gtest.h>
+
+#include <Teuchos_DefaultComm.hpp>
+
+#include "core/Collective.hpp"
+#include "core/DofMap.hpp"
+#include "core/Errors.hpp"
+#include "core/Formula.hpp"
+#include "core/Parameters.hpp"
+
+namespace impm {
+namespace {
+
+using Teuchos::ParameterList;
+
+std::string errorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(Formula, NumbersExpressionsAndVariables) {
+  EXPECT_TRUE(Formula("2.5", {"x"}).isConstant());
+  EXPECT_DOUBLE_EQ(Formula("2.5", {"x"})(7.0), 2.5);
+  const Formula f("1 + x*t + sin(pi*x)", {"x", "t"});
+  EXPECT_NEAR(f(0.5, 2.0), 1 + 1.0 + 1.0, 1e-15);
+  EXPECT_FALSE(f.independentOf("t"));
+  EXPECT_TRUE(Formula("x^2", {"x", "t"}).independentOf("t"));
+}
+
+TEST(Formula, RejectsUnknownVariablesAndSyntax) {
+  EXPECT_NE(errorOf([] { Formula("1 + y", {"x"}); }).find("'y', which is not a variable"),
+            std::string::npos);
+  EXPECT_NE(errorOf([] { Formula("1 + * x", {"x"}); }).find("cannot read formula"),
+            std::string::npos);
+}
+
+ParameterList validList() {
+  ParameterList valid;
+  declareInt(valid, "Count", 3, "a count", Bounds::atLeast(1));
+  declareDouble(valid, "Modulus", 1.0, "a modulus", Bounds::positive(), true);
+  declareChoice(valid, "Kind", "a", {"a", "b"}, "a kind");
+  declareFormula(valid, "Load", "0", {"x"}, "a load");
+  declareIntArray(valid, "Cells", {4}, {1, 2}, "cells", Bounds::atLeast(1));
+  declareDouble(valid.sublist("[Kind=b]"), "Extra", 2.0, "only for kind b");
+  declareString(valid.sublist("Items").sublist("<name>"), "Tag", "", "a tag", true);
+  return valid;
+}
+
+TEST(Parameters, FillsDefaultsAndConvertsIntsToDoubles) {
+  ParameterList user;
+  user.set("Modulus", 5);  // an int where a double is expected
+  validateParameters(user, validList());
+  EXPECT_EQ(user.get<int>("Count"), 3);
+  EXPECT_DOUBLE_EQ(user.get<double>("Modulus"), 5.0);
+  EXPECT_FALSE(user.isParameter("Extra"));  // only with Kind = b
+}
+
+TEST(Parameters, EveryKindOfMistakeNamesThePath) {
+  auto check = [](const std::function<void(ParameterList&)>& edit, const std::string& expected) {
+    ParameterList user;
+    user.set("Modulus", 1.0);
+    edit(user);
+    const std::string error = errorOf([&] { validateParameters(user, validList()); });
+    EXPECT_NE(error.find(expected), std::string::npos) << error;
+  };
+  check([](ParameterList& u) { u.set("Moduls", 2.0); },
+        "Moduls: unknown parameter (did you mean 'Modulus'?)");
+  check([](ParameterList& u) { u.set("Count", 2.5); }, "Count: expected type int, got double");
+  check([](ParameterList& u) { u.set("Modulus", -1.0); }, "Modulus: must be > 0 (got -1)");
+  check([](ParameterList& u) { u.remove("Modulus"); }, "Modulus: required parameter is missing");
+  check([](ParameterList& u) { u.set("Kind", std::string("c")); }, "Kind: must be one of: a, b");
+  check([](ParameterList& u) { u.set("Load", std::string("x + z")); },
+        "Load: formula 'x + z' uses 'z'");
+  check(
+      [](ParameterList& u) {
+        u.set("Cells", Teuchos::Array<int>(std::vector<int>{1, 2, 3}));
+      },
+      "Cells: expected 1 or 2 entries, got 3");
+  check([](ParameterList& u) { u.set("Extra", 1.0); }, "Extra: unknown parameter");
+  check([](ParameterList& u) { u.sublist("Items").sublist("first"); }, "Items/first/Tag: required");
+  check([](ParameterList& u) { u.sublist("Count"); },
+        "Count: must be a parameter, not a ParameterList");
+}
+
+TEST(Parameters, VariantsAndOverridesAreTypedLikeTheParameter) {
+  ParameterList user;
+  user.set("Modulus", 1.0);
+  user.set("Kind", std::string("b"));
+  validateParameters(user, validList());
+  EXPECT_DOUBLE_EQ(user.get<double>("Extra"), 2.0);
+  Teuchos::ParameterEntry proto;
+  ASSERT_TRUE(findValidEntry(validList(), user, "Extra", proto));
+  EXPECT_TRUE(parseLike(proto, "4.5", "Extra").isType<double>());
+  ASSERT_TRUE(findValidEntry(validList(), user, "Cells", proto));
+  EXPECT_EQ(Teuchos::getValue<Teuchos::Array<int>>(parseLike(proto, "{8}", "Cells"))[0], 8);
+  ASSERT_TRUE(findValidEntry(validList(), user, "Load", proto));
+  EXPECT_TRUE(parseLike(proto, "3", "Load").isType<double>());
+  EXPECT_TRUE(parseLike(proto, "3*x", "Load").isType<std::string>());
+  EXPECT_FALSE(findValidEntry(validList(), user, "Nothing", proto));
+  EXPECT_NE(errorOf([&] { parseLike(proto, "x", "Count"); }).find(""), std::string::npos);
+  ASSERT_TRUE(findValidEntry(validList(), user, "Count", proto));
+  EXPECT_NE(errorOf([&] { parseLike(proto, "two", "Count"); }).find("cannot read 'two' as int"),
+            std::string::npos);
+}
+
+TEST(Decomposition, EveryCellAndNodeHasExactlyOneOwner) {
+  for (int ranks : {1, 2, 3, 4, 6}) {
+    const auto g1 = makeGridGeometry<1>({0.0}, {1.0}, {10});
+    const auto g2 = makeGridGeometry<2>({0.0, 0.0}, {2.0, 1.0}, {8, 5});
+    Decomposition<1> d1(g1, ranks);
+    Decomposition<2> d2(g2, ranks);
+    std::vector<int> cells1(g1.numCells(), 0), nodes1(g1.numNodes(), 0);
+    std::vector<int> cells2(g2.numCells(), 0), nodes2(g2.numNodes(), 0);
+    for (int r = 0; r < ranks; ++r) {
+      for (auto c : d1.ownedCells(r))
+        ++cells1[c];
+      for (auto n : d1.ownedNodes(r))
+        ++nodes1[n];
+      for (auto c : d2.ownedCells(r))
+        ++cells2[c];
+      for (auto n : d2.ownedNodes(r))
+        ++nodes2[n];
+    }
+    for (int c : cells1)
+      EXPECT_EQ(c, 1);
+    for (int c : nodes1)
+      EXPECT_EQ(c, 1);
+    for (int c : cells2)
+      EXPECT_EQ(c, 1);
+    for (int c : nodes2)
+      EXPECT_EQ(c, 1);
+  }
+}
+
+TEST(DofMap, ActiveNodesOnlyWithExtrasNextToTheirAnchors) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  NodeOwnership<1> own(makeGridGeometry<1>({0.0}, {1.0}, {10}), comm);
+  // Every rank touches nodes 2..7 (nodes 0, 1, 8, 9, 10 stay inactive).
+  std::vector<GlobalId> touched = {2, 3, 4, 5, 6, 7};
+  DofMap<1> dofs(own, touched, {ExtraDof{2}, ExtraDof{7}});
+  EXPECT_EQ(dofs.numActiveNodes(), 6);
+  EXPECT_EQ(dofs.ownedMap()->getGlobalNumElements(), 8u);
+  const auto gids = dofs.ownedMap()->getNodeElementList();
+  for (decltype(gids.size()) k = 0; k < gids.size(); ++k) {
+    if (gids[k] == dofs.extraDof(0)) {
+      ASSERT_GT(k, 0);
+      EXPECT_EQ(gids[k - 1], dofs.nodeDof(2, 0));
+    }
+    if (gids[k] == dofs.extraDof(1)) {
+      ASSERT_GT(k, 0);
+      EXPECT_EQ(gids[k - 1], dofs.nodeDof(7, 0));
+    }
+  }
+  // The overlap map starts with the owned map.
+  const auto overlap = dofs.overlapMap()->getNodeElementList();
+  for (decltype(gids.size()) k = 0; k < gids.size(); ++k)
+    EXPECT_EQ(overlap[k], gids[k]);
+}
+
+TEST(Collective, AFailureOnOneRankStopsEveryRank) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  const int last = comm->getSize() - 1;
+  try {
+    collectively(*comm, [&] {
+      if (comm->getRank() == last)
+        throw InputError("Some/Path", "broken on rank " + std::to_string(last));
+    });
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.path(), "Some/Path");
+    EXPECT_EQ(std::string(e.what()), "Some/Path: broken on rank " + std::to_string(last));
+  }
+  EXPECT_NO_THROW(collectively(*comm, [] {}));
+}
+
+}  // namespace
+}  // namespace impm
