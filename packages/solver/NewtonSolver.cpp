@@ -1,6 +1,7 @@
 #include "solver/NewtonSolver.hpp"
 
 #include <NOX.H>
+#include <NOX_Solver_LineSearchBased.H>
 #include <NOX_Thyra.H>
 #include <NOX_Thyra_Vector.H>
 #include <NOX_Observer.hpp>
@@ -9,6 +10,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <ostream>
 #include <sstream>
 
@@ -22,6 +24,60 @@ namespace impm {
 
 namespace {
 
+double stepLength(const NOX::Solver::Generic& solver) {
+  const auto* lineSearch = dynamic_cast<const NOX::Solver::LineSearchBased*>(&solver);
+  return lineSearch ? lineSearch->getStepSize() : 1.0;
+}
+
+// ||d|| / ||x_k||: the size of the last Newton direction d relative to the iterate, where
+// x_k - x_(k-1) = step d (the line search may have shortened the step).
+double relativeUpdate(const NOX::Solver::Generic& solver) {
+  const auto& x = solver.getSolutionGroup().getX();
+  auto dx = x.clone(NOX::DeepCopy);
+  dx->update(-1.0, solver.getPreviousSolutionGroup().getX(), 1.0);
+  const double nx = x.norm(), nd = dx->norm() / stepLength(solver);
+  return nx > 0 ? nd / nx : (nd == 0 ? 0.0 : std::numeric_limits<double>::infinity());
+}
+
+// Converged when the Newton direction is smaller than `tolerance` relative to the iterate.
+// The residual of a displacement discretisation has a round-off floor that grows with the
+// number of cells (the strain F - 1 = sum_i G_ip u_i cancels terms of size |u|/h), so a
+// relative residual test alone cannot pass on fine grids; the Newton direction, that floor
+// damped by K^-1, can.  (At the floor the line search may also shorten steps.)
+class RelativeUpdate : public NOX::StatusTest::Generic {
+ public:
+  explicit RelativeUpdate(double tolerance) : tolerance_(tolerance) {}
+  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver,
+                                          NOX::StatusTest::CheckType /*type*/) override {
+    status_ = NOX::StatusTest::Unconverged;
+    if (solver.getNumIterations() == 0)
+      return status_;
+    ratio_ = relativeUpdate(solver);
+    if (ratio_ <= tolerance_)
+      status_ = NOX::StatusTest::Converged;
+    return status_;
+  }
+  NOX::StatusTest::StatusType getStatus() const override { return status_; }
+  std::ostream& print(std::ostream& out, int indent = 0) const override {
+    for (int k = 0; k < indent; ++k)
+      out << ' ';
+    return out << status_ << " relative update " << ratio_ << " <= " << tolerance_ << "\n";
+  }
+
+ private:
+  double tolerance_, ratio_ = 0.0;
+  NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
+};
+
+// The line-search step length, when it was not a full Newton step.
+std::string stepNote(const NOX::Solver::Generic& solver) {
+  if (stepLength(solver) == 1.0)
+    return "";
+  std::ostringstream s;
+  s << "  (line search step " << stepLength(solver) << ")";
+  return s.str();
+}
+
 // Records ||R|| and the linear iterations of every Newton iteration.
 class IterationRecorder : public NOX::Observer {
  public:
@@ -32,12 +88,15 @@ class IterationRecorder : public NOX::Observer {
     const double norm = solver.getSolutionGroup().getNormF();
     const auto stats = solver.getSolverStatistics();
     const int linear = stats->linearSolve.lastLinearSolve_NumIterations;
+    const double update = relativeUpdate(solver);
     report_.residualNorms.push_back(norm);
     report_.linearIterations.push_back(linear);
+    report_.relativeUpdates.push_back(update);
     if (log_)
       *log_ << indent_ << "newton " << std::setw(2) << report_.iterations()
             << "  |R| = " << std::scientific << std::setprecision(3) << norm
-            << "  linear iterations " << linear << std::defaultfloat << "\n";
+            << "  |dx|/|x| = " << update << "  linear iterations " << linear << std::defaultfloat
+            << stepNote(solver) << "\n";
   }
 
  private:
@@ -64,6 +123,11 @@ Teuchos::ParameterList NewtonSolver::validParameters() {
   declareDouble(valid, "Relative Tolerance", 1e-10,
                 "Converged when ||R|| <= this times ||R|| of the initial guess",
                 Bounds::positive());
+  declareDouble(valid, "Update Tolerance", 1e-9,
+                "Also converged when the Newton direction is smaller than this relative to the "
+                "unknowns (0: not used); needed on fine grids, where round-off bounds "
+                "how far the residual can fall",
+                Bounds::nonNegative());
   declareDouble(valid, "Absolute Tolerance", 0.0, "Also converged when ||R|| <= this (0: not used)",
                 Bounds::nonNegative());
   declareDouble(valid, "Linear Tolerance", 1e-10,
@@ -88,6 +152,7 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList& params,
           createLinearSolveStrategy(params.sublist("Linear Solver"), comm, "Solver/Linear Solver")),
       relativeTolerance_(params.get<double>("Relative Tolerance")),
       absoluteTolerance_(params.get<double>("Absolute Tolerance")),
+      updateTolerance_(params.get<double>("Update Tolerance")),
       maxIterations_(params.get<int>("Maximum Iterations")) {
   auto& p = noxParams_;
   p.set("Nonlinear Solver", "Line Search Based");
@@ -124,6 +189,8 @@ NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vecto
   converged->addStatusTest(Teuchos::rcp(new NormF(*group, relativeTolerance_)));
   if (absoluteTolerance_ > 0)
     converged->addStatusTest(Teuchos::rcp(new NormF(absoluteTolerance_)));
+  if (updateTolerance_ > 0)
+    converged->addStatusTest(Teuchos::rcp(new RelativeUpdate(updateTolerance_)));
   auto tests = Teuchos::rcp(new Combo(Combo::OR));
   tests->addStatusTest(Teuchos::rcp(new FiniteValue));
   tests->addStatusTest(converged);

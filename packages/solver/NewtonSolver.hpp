@@ -16,9 +16,10 @@ namespace impm {
 
 struct NewtonReport {
   bool converged = false;
-  std::vector<double> residualNorms;  // ||R|| before the first and after every iteration
-  std::vector<int> linearIterations;  // per Newton iteration
-  std::string failure;                // why it stopped, when not converged
+  std::vector<double> residualNorms;    // ||R|| before the first and after every iteration
+  std::vector<int> linearIterations;    // per Newton iteration
+  std::vector<double> relativeUpdates;  // ||dx|| / ||x|| per Newton iteration
+  std::string failure;                  // why it stopped, when not converged
 
   int iterations() const { return static_cast<int>(linearIterations.size()); }
   int totalLinearIterations() const;
@@ -45,7 +46,7 @@ class NewtonSolver {
   Teuchos::RCP<const Comm> comm_;
   Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> lows_;
   Teuchos::ParameterList noxParams_;
-  double relativeTolerance_, absoluteTolerance_;
+  double relativeTolerance_, absoluteTolerance_, updateTolerance_;
   int maxIterations_;
   std::ostream* log_ = nullptr;
   std::string indent_;
