@@ -26,8 +26,7 @@ void updateParticles(Kinematics kinematics, const ParticleGridMap<Dim>& map,
           for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k)
             dup += phi(k) * du(entryDofs(k) + a, 0);
           u(p, a) += dup;
-          if (moves)
-            x(p, a) += dup;
+          x(p, a) += dup;  // total Lagrangian: x = X + u, the map stays at X
         }
         for (int a = 0; a < Dim; ++a)
           for (int b = 0; b < Dim; ++b)

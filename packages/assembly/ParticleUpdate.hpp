@@ -1,10 +1,11 @@
 #pragma once
 // Grid to particles after a converged step: the displacement increment is mapped with
 // u_p = sum_i phi_ip u_i (eq. 1.23) and the particle state is advanced:
-//   u_p += sum_i phi_ip du_i,  F_p = trial F,  stress = P F^T / J (Cauchy; in 1-D the axial
-//   force per unit section);
-// with updated-Lagrangian kinematics the particles also move and deform:
-//   x_p += sum_i phi_ip du_i,  V_p = J V_p0,  domain = F domain0 (eq. 1.36 CPDI vectors).
+//   u_p += sum_i phi_ip du_i,  x_p += sum_i phi_ip du_i,  F_p = trial F,
+//   stress = P F^T / J (Cauchy; in 1-D the axial force per unit section);
+// with updated-Lagrangian kinematics the integration domains follow the deformation:
+//   V_p = J V_p0,  domain = F domain0 (eq. 1.36 CPDI vectors).
+// (With total-Lagrangian kinematics the map is built at X_p and the reference domains.)
 
 #include "assembly/Kinematics.hpp"
 

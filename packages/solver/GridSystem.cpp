@@ -28,12 +28,17 @@ DofMap<Dim> numberUnknowns(const NodeOwnership<Dim>& ownership, const ParticleGr
 }
 
 // The map, built on every rank; a particle outside the grid on one rank stops all of them.
+// With total-Lagrangian kinematics the map is built at the reference positions and domains.
 template <int Dim>
 ParticleGridMap<Dim> buildMapCollectively(const NodeOwnership<Dim>& ownership, Method method,
+                                          Kinematics kinematics,
                                           const ParticleSet<Dim>& particles) {
+  ParticleSet<Dim> at = particles;  // views: a shallow copy
+  if (kinematics == Kinematics::totalLagrangian)
+    at.x = particles.X, at.domain = particles.domain0;
   ParticleGridMap<Dim> map;
   collectively(*ownership.comm(),
-               [&] { map = buildParticleGridMap(method, ownership.grid(), particles); });
+               [&] { map = buildParticleGridMap(method, ownership.grid(), at); });
   return map;
 }
 
@@ -56,7 +61,7 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
       contributions_(contributions),
       time_(time),
       loadFactor_(loadFactor),
-      map_(buildMapCollectively(ownership, method, particles)),
+      map_(buildMapCollectively(ownership, method, kinematics, particles)),
       dofs_(numberUnknowns(ownership, map_, contributions, firstExtra_)) {
   entryDofs_ = impm::entryDofs(map_, *dofs_.overlapMap());
   std::vector<std::pair<GO, GO>> couplings;

@@ -1,6 +1,7 @@
 // The 1-D grid system end to end below the input layer: particles, map, Robin ends, the
-// NOX/Stratimikos solve.  A linear field must be reproduced to round-off (patch test) by
-// every method whose quadrature is exact for it, on any number of ranks.
+// NOX/Stratimikos solve; and its Jacobian against finite differences of its residual.  A linear
+// field must be reproduced to round-off (patch test) by every method whose quadrature is exact for
+// it, on any number of ranks.
 
 #include <gtest/gtest.h>
 
@@ -42,6 +43,7 @@ ParticleSet<1> barPoints(const NodeOwnership<1>& own, Method method, const Formu
   }
   Kokkos::deep_copy(ps.X, X), Kokkos::deep_copy(ps.x, X), Kokkos::deep_copy(ps.volume, V);
   Kokkos::deep_copy(ps.domain, r), Kokkos::deep_copy(ps.section, A), Kokkos::deep_copy(ps.F, F);
+  Kokkos::deep_copy(ps.domain0, r), Kokkos::deep_copy(ps.volume0, V);
   Kokkos::deep_copy(ps.force, f);
   return ps;
 }
@@ -88,6 +90,68 @@ TEST(BarSolve, PatchTestIsExact) {
     EXPECT_NEAR(dynamic_cast<RobinEnd&>(*bcs[0]).force(), -2.0, 1e-12) << methodName(method);
     EXPECT_NEAR(dynamic_cast<RobinEnd&>(*bcs[1]).force(), 1.0, 1e-12) << methodName(method);
     EXPECT_LE(report.iterations(), 2) << methodName(method);
+  }
+}
+
+// The Jacobian of the grid system is the derivative of its residual: central differences
+// of R along random directions, on a bar whose particles were already deformed (so the
+// push-forward of P and A to the start of the step is exercised) with Robin ends.
+TEST(GridSystem, JacobianIsTheDerivativeOfTheResidual) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  NodeOwnership<1> own(makeGridGeometry<1>({-0.2}, {1.5}, {10}), comm);
+  const int rank = comm->getRank();
+  std::vector<double> centres;
+  for (int p = 0; p < 15; ++p) {
+    const double x = (p + 0.5) / 15.0;
+    if (own.decomposition().ownerOfPoint(&x) == rank)
+      centres.push_back(x);
+  }
+  ParticleSet<1> ps(centres.size());
+  {
+    auto X = Kokkos::create_mirror_view(ps.X);
+    auto r = Kokkos::create_mirror_view(ps.domain);
+    auto V = Kokkos::create_mirror_view(ps.volume);
+    auto A = Kokkos::create_mirror_view(ps.section);
+    auto F = Kokkos::create_mirror_view(ps.F);
+    auto f = Kokkos::create_mirror_view(ps.force);
+    for (std::size_t p = 0; p < centres.size(); ++p) {
+      const double J = 1.0 + 0.3 * centres[p];
+      X(p, 0) = centres[p], F(p, 0, 0) = J, V(p) = J / 15.0, r(p, 0, 0) = J / 30.0;
+      A(p) = 1.0, f(p, 0) = 0.1;
+    }
+    Kokkos::deep_copy(ps.X, X), Kokkos::deep_copy(ps.x, X), Kokkos::deep_copy(ps.domain, r);
+    Kokkos::deep_copy(ps.volume, V), Kokkos::deep_copy(ps.section, A), Kokkos::deep_copy(ps.F, F);
+    Kokkos::deep_copy(ps.force, f);
+  }
+  Teuchos::ParameterList mat;
+  mat.set("Model", std::string("linear")), mat.set("E", std::string("1 + x"));
+  validateParameters(mat, materialValidParameters());
+  std::vector<std::shared_ptr<Material<1>>> materials = {createMaterial<1>("m", mat)};
+  materials[0]->initialize(ps, 0);
+  auto robin = [](const std::string& end, double a, double b, double at) {
+    Teuchos::ParameterList p;
+    p.set("Body", std::string("bar")), p.set("End", end), p.set("alpha", a), p.set("beta", b);
+    validateParameters(p, RobinEnd::validParameters());
+    return std::make_shared<RobinEnd>(end, p, at, Kinematics::updatedLagrangian);
+  };
+  std::vector<std::shared_ptr<Contribution<1>>> bcs = {robin("left", 0, 1, 0.0),
+                                                       robin("right", 1, -2, 1.0)};
+  for (Method method : {Method::mpm, Method::gimp, Method::cpdi}) {
+    GridSystem<1> system(own, method, Kinematics::updatedLagrangian, ps, materials, bcs, 1.0, 1.0);
+    Vector x(system.map()), v(system.map()), Jv(system.map()), rp(system.map()), rm(system.map());
+    x.randomize(-0.01, 0.01);
+    v.randomize(-1.0, 1.0);
+    auto J = system.createJacobian();
+    system.evaluate(x, nullptr, J.get());
+    J->apply(v, Jv);
+    const double eps = 1e-6;
+    Vector xp(x, Teuchos::Copy), xm(x, Teuchos::Copy);
+    xp.update(eps, v, 1.0), xm.update(-eps, v, 1.0);
+    system.evaluate(xp, &rp, nullptr);
+    system.evaluate(xm, &rm, nullptr);
+    rp.update(-1.0 / (2 * eps), rm, 1.0 / (2 * eps));
+    rp.update(-1.0, Jv, 1.0);
+    EXPECT_LT(rp.norm2(), 1e-7 * Jv.norm2()) << methodName(method);
   }
 }
 

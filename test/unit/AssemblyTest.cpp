@@ -1,0 +1,110 @@
+// assembly: the deformation gradient from grid displacements (both kinematics), the
+// grid-to-particle update (eq. 1.23), and the internal force's translation invariance.
+
+#include <gtest/gtest.h>
+
+#include "assembly/Forces.hpp"
+#include "assembly/ParticleUpdate.hpp"
+#include "basis/Method.hpp"
+
+namespace impm {
+namespace {
+
+struct Fixture {
+  GridGeometry<1> grid = makeGridGeometry<1>({0.0}, {1.0}, {4});
+  ParticleSet<1> ps{6};
+  ParticleGridMap<1> map;
+  Kokkos::View<LO*> lids;  // node id == DOF index here
+  Fixture(Method method) {
+    auto x = Kokkos::create_mirror_view(ps.x);
+    auto r = Kokkos::create_mirror_view(ps.domain);
+    auto V = Kokkos::create_mirror_view(ps.volume);
+    auto A = Kokkos::create_mirror_view(ps.section);
+    auto F = Kokkos::create_mirror_view(ps.F);
+    for (int p = 0; p < 6; ++p) {
+      x(p, 0) = 0.1 + 0.15 * p, r(p, 0, 0) = 0.07, V(p) = 0.14, A(p) = 1.0;
+      F(p, 0, 0) = 1.0 + 0.1 * p;  // some prior deformation
+    }
+    Kokkos::deep_copy(ps.x, x), Kokkos::deep_copy(ps.X, x), Kokkos::deep_copy(ps.domain, r);
+    Kokkos::deep_copy(ps.domain0, r), Kokkos::deep_copy(ps.volume, V);
+    Kokkos::deep_copy(ps.volume0, V), Kokkos::deep_copy(ps.section, A), Kokkos::deep_copy(ps.F, F);
+    map = buildParticleGridMap(method, grid, ps);
+    lids = Kokkos::View<LO*>("lids", map.numEntries());
+    auto node = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), map.node);
+    auto l = Kokkos::create_mirror_view(lids);
+    for (std::size_t k = 0; k < map.numEntries(); ++k)
+      l(k) = static_cast<LO>(node(k));
+    Kokkos::deep_copy(lids, l);
+  }
+  // Grid displacement du_i = a x_i + b.
+  Kokkos::View<double**, Kokkos::LayoutLeft> linearField(double a, double b) {
+    Kokkos::View<double**, Kokkos::LayoutLeft> du("du", 5, 1);
+    auto h = Kokkos::create_mirror_view(du);
+    for (int i = 0; i < 5; ++i)
+      h(i, 0) = a * grid.nodeCoord(0, i) + b;
+    Kokkos::deep_copy(du, h);
+    return du;
+  }
+};
+
+TEST(Kinematics, LinearGridFieldGivesHomogeneousDeformation) {
+  for (Method method : {Method::mpm, Method::gimp, Method::cpdi}) {
+    Fixture f(method);
+    auto du = f.linearField(0.2, 0.05);
+    ParticleSet<1>::Tensors Ftl("F", 6), Ful("F", 6);
+    trialDeformationGradient<1>(Kinematics::totalLagrangian, f.map, f.lids, du, f.ps.F, Ftl);
+    trialDeformationGradient<1>(Kinematics::updatedLagrangian, f.map, f.lids, du, f.ps.F, Ful);
+    auto tl = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), Ftl);
+    auto ul = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), Ful);
+    for (int p = 0; p < 6; ++p) {
+      const double Fn = 1.0 + 0.1 * p;
+      EXPECT_NEAR(tl(p, 0, 0), Fn + 0.2, 1e-14) << methodName(method);  // F^n + grad du
+      EXPECT_NEAR(ul(p, 0, 0), 1.2 * Fn, 1e-14) << methodName(method);  // (1 + grad du) F^n
+    }
+  }
+}
+
+TEST(ParticleUpdate, MovesParticlesWithTheGridAndScalesDomains) {
+  Fixture f(Method::cpdi);
+  auto du = f.linearField(0.2, 0.05);
+  ParticleSet<1>::Tensors F("F", 6), P("P", 6);
+  trialDeformationGradient<1>(Kinematics::updatedLagrangian, f.map, f.lids, du, f.ps.F, F);
+  Kokkos::deep_copy(P, 3.0);
+  updateParticles<1>(Kinematics::updatedLagrangian, f.map, f.lids, du, F, P, f.ps);
+  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), f.ps.x);
+  auto u = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), f.ps.u);
+  auto V = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), f.ps.volume);
+  auto r = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), f.ps.domain);
+  auto s = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), f.ps.stress);
+  for (int p = 0; p < 6; ++p) {
+    const double X = 0.1 + 0.15 * p, Fp = 1.2 * (1.0 + 0.1 * p);
+    EXPECT_NEAR(u(p, 0), 0.2 * X + 0.05, 1e-14);  // u_p = sum phi_ip u_i, exact for linear u
+    EXPECT_NEAR(x(p, 0), 1.2 * X + 0.05, 1e-14);
+    EXPECT_NEAR(V(p), Fp * 0.14, 1e-14);        // V = J V0
+    EXPECT_NEAR(r(p, 0, 0), Fp * 0.07, 1e-14);  // r = F r0
+    EXPECT_NEAR(s(p, 0, 0), 3.0, 1e-14);        // 1-D: P F / J = P
+  }
+}
+
+TEST(Forces, InternalForceSumsToZero) {
+  // sum_i G_ip = 0: a stress state exerts no net force on the grid.
+  for (Method method : {Method::fem, Method::mpm, Method::gimp, Method::cpdi}) {
+    Fixture f(method);
+    ParticleSet<1>::Tensors P("P", 6);
+    auto h = Kokkos::create_mirror_view(P);
+    for (int p = 0; p < 6; ++p)
+      h(p, 0, 0) = 1.0 + p * p;
+    Kokkos::deep_copy(P, h);
+    Kokkos::View<double**, Kokkos::LayoutLeft> fint("f", 5, 1);
+    addInternalForce<1>(f.map, f.lids, f.ps, P, fint);
+    auto fh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), fint);
+    double sum = 0, size = 0;
+    for (int i = 0; i < 5; ++i)
+      sum += fh(i, 0), size += std::abs(fh(i, 0));
+    EXPECT_GT(size, 1.0);
+    EXPECT_NEAR(sum, 0.0, 1e-13 * size) << methodName(method);
+  }
+}
+
+}  // namespace
+}  // namespace impm

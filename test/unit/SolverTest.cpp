@@ -1,0 +1,161 @@
+// solver: Newton through NOX converges quadratically, the grid system's Jacobian is the
+// derivative of its residual, and the Stratimikos strategies (Ifpack2, MueLu) solve on any
+// number of ranks.
+
+#include <gtest/gtest.h>
+
+#include <Teuchos_DefaultComm.hpp>
+#include <Thyra_LinearOpWithSolveFactoryHelpers.hpp>
+#include <Thyra_TpetraThyraWrappers.hpp>
+
+#include "core/Errors.hpp"
+#include "core/Parameters.hpp"
+#include "solver/LinearSolver.hpp"
+#include "solver/NewtonSolver.hpp"
+
+namespace impm {
+namespace {
+
+// R_i(x) = x_i^3 + x_i - b_i: nonlinear, with a diagonal Jacobian 3 x_i^2 + 1.
+class CubicModel : public ResidualModel {
+ public:
+  explicit CubicModel(const Teuchos::RCP<const Comm>& comm)
+      : map_(Teuchos::rcp(new Map(40, 0, comm))) {
+    graph_ = Teuchos::rcp(new CrsGraph(map_, 1));
+    for (std::size_t k = 0; k < map_->getNodeNumElements(); ++k) {
+      const GO g = map_->getGlobalElement(k);
+      graph_->insertGlobalIndices(g, Teuchos::tuple<GO>(g));
+    }
+    graph_->fillComplete();
+  }
+  Teuchos::RCP<const Map> map() const override { return map_; }
+  Teuchos::RCP<CrsMatrix> createJacobian() const override {
+    return Teuchos::rcp(new CrsMatrix(graph_));
+  }
+  void evaluate(const Vector& x, Vector* f, CrsMatrix* J) override {
+    auto xv = x.getData();
+    if (J)
+      J->resumeFill();
+    for (decltype(xv.size()) k = 0; k < xv.size(); ++k) {
+      const double b = 1.0 + map_->getGlobalElement(k) % 5;
+      if (f)
+        f->replaceLocalValue(k, xv[k] * xv[k] * xv[k] + xv[k] - b);
+      if (J) {
+        const double d = 3 * xv[k] * xv[k] + 1;
+        const LO col = static_cast<LO>(k);
+        J->replaceLocalValues(static_cast<LO>(k), 1, &d, &col);
+      }
+    }
+    if (J)
+      J->fillComplete();
+  }
+
+ private:
+  Teuchos::RCP<const Map> map_;
+  Teuchos::RCP<CrsGraph> graph_;
+};
+
+Teuchos::ParameterList solverList(const std::string& lineSearch = "Full Step") {
+  Teuchos::ParameterList p;
+  p.set("Line Search", lineSearch);
+  p.set("Relative Tolerance", 1e-13);
+  p.set("Update Tolerance", 0.0);
+  validateParameters(p, NewtonSolver::validParameters());
+  return p;
+}
+
+TEST(NewtonSolver, ConvergesQuadratically) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  auto model = Teuchos::rcp(new CubicModel(comm));
+  NewtonSolver newton(solverList(), comm);
+  Vector x(model->map());
+  x.putScalar(3.0);
+  const auto report = newton.solve(model, x);
+  ASSERT_TRUE(report.converged);
+  const auto& r = report.residualNorms;
+  ASSERT_GE(r.size(), 4u);
+  // Quadratic: r_(k+1) <= C r_k^2 once in the basin; checked while above round-off.
+  for (std::size_t k = 2; k + 1 < r.size(); ++k)
+    if (r[k + 1] > 1e-12) {
+      EXPECT_LT(r[k + 1] / (r[k] * r[k]), 10.0) << "iteration " << k;
+    }
+  EXPECT_LT(r.back(), 1e-13 * r.front());
+  for (int n : report.linearIterations)
+    EXPECT_GE(n, 1);
+}
+
+TEST(NewtonSolver, ReportsFailureWithinTheIterationLimit) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  auto model = Teuchos::rcp(new CubicModel(comm));
+  auto params = solverList();
+  params.set("Maximum Iterations", 2);
+  NewtonSolver newton(params, comm);
+  Vector x(model->map());
+  x.putScalar(30.0);
+  const auto report = newton.solve(model, x);
+  EXPECT_FALSE(report.converged);
+  EXPECT_NE(report.failure.find("no convergence in 2 iterations"), std::string::npos);
+}
+
+TEST(LinearSolver, MisspeltListIsAnInputError) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  Teuchos::ParameterList bad;
+  bad.set("Linear Solver Type", std::string("Belox"));
+  try {
+    createLinearSolveStrategy(bad, comm, "Solver/Linear Solver");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.path(), "Solver/Linear Solver");
+  }
+}
+
+// 1-D Laplacian with Dirichlet ends, solved by every strategy impm documents.
+void expectSolves(const Teuchos::ParameterList& params) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  const GO n = 200;
+  auto map = Teuchos::rcp(new Map(n, 0, comm));
+  auto A = Teuchos::rcp(new CrsMatrix(map, 3));
+  for (std::size_t k = 0; k < map->getNodeNumElements(); ++k) {
+    const GO i = map->getGlobalElement(k);
+    std::vector<GO> cols = {i};
+    std::vector<double> vals = {2.0};
+    if (i > 0)
+      cols.push_back(i - 1), vals.push_back(-1.0);
+    if (i < n - 1)
+      cols.push_back(i + 1), vals.push_back(-1.0);
+    A->insertGlobalValues(i, Teuchos::ArrayView<const GO>(cols),
+                          Teuchos::ArrayView<const double>(vals));
+  }
+  A->fillComplete();
+  auto lows = createLinearSolveStrategy(params, comm, "test");
+  auto op = Thyra::createConstLinearOp<double, LO, GO, Node>(
+      Teuchos::rcp_implicit_cast<const Tpetra::Operator<double, LO, GO, Node>>(A));
+  auto solver = Thyra::linearOpWithSolve(*lows, op);
+  auto b = Teuchos::rcp(new Vector(map)), x = Teuchos::rcp(new Vector(map));
+  b->putScalar(1.0);
+  auto status = solver->solve(Thyra::NOTRANS, *Thyra::createConstVector<double, LO, GO, Node>(b),
+                              Thyra::createVector<double, LO, GO, Node>(x).ptr());
+  Vector r(map);
+  A->apply(*x, r);
+  r.update(1.0, *b, -1.0);
+  EXPECT_LT(r.norm2(), 1e-8 * b->norm2());
+}
+
+TEST(LinearSolver, DefaultGmresWithIlut) {
+  expectSolves(Teuchos::ParameterList());
+}
+
+TEST(LinearSolver, CgWithMueLu) {
+  Teuchos::ParameterList p;
+  p.set("Preconditioner Type", std::string("MueLu"));
+  auto& belos = p.sublist("Linear Solver Types").sublist("Belos");
+  belos.set("Solver Type", std::string("Block CG"));
+  belos.sublist("Solver Types").sublist("Block CG").set("Maximum Iterations", 500);
+  belos.sublist("Solver Types").sublist("Block CG").set("Convergence Tolerance", 1e-10);
+  // KLU2 is unreliable on several ranks in Trilinos 13.2: relax on the coarse level.
+  p.sublist("Preconditioner Types").sublist("MueLu").set("coarse: type", std::string("RELAXATION"));
+  expectSolves(p);
+}
+
+}  // namespace
+}  // namespace impm
