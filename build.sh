@@ -6,6 +6,7 @@
 #   ./build.sh demo     build, run the default demo deck, say where its outputs are
 #   ./build.sh test     build, run the whole ctest suite (unit, verification, MPI)
 #   ./build.sh build    install dependencies and build only
+#   ./build.sh benchmark  build, run the benchmarks and update doc/performance.md
 #
 # Environment: IMPM_BUILD_DIR (default ./build), IMPM_JOBS (default: number of cores).
 set -euo pipefail
@@ -70,8 +71,14 @@ case "$cmd" in
     build
     ctest --test-dir "$build_dir" --output-on-failure -j "$jobs"
     ;;
+  benchmark)
+    install_missing "${build_packages[@]}"
+    build
+    python3 "$here/test/benchmark/static_bar.py" --impm "$build_dir/drivers/impm" \
+      --write "$here/doc/performance.md"
+    ;;
   *)
-    echo "usage: $0 [demo|test|build]" >&2
+    echo "usage: $0 [demo|test|build|benchmark]" >&2
     exit 2
     ;;
 esac

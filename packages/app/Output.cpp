@@ -16,6 +16,9 @@ Teuchos::ParameterList outputValidParameters() {
              Bounds::atLeast(1));
   declareBool(valid, "Exodus", true, "Write Exodus files of the grid and the particles");
   declareBool(valid, "CSV", true, "Write the particle table as CSV");
+  declareBool(valid, "Timers", false,
+              "Print the wall-clock time of each phase (map, graph, residual, Jacobian, Newton "
+              "solve, particle update, output) at the end, over all ranks");
   return valid;
 }
 

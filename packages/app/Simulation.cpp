@@ -12,6 +12,7 @@
 #include "bc/RobinEnd.hpp"
 #include "core/Collective.hpp"
 #include "core/Errors.hpp"
+#include "core/Timers.hpp"
 #include "io/InputDeck.hpp"
 #include "material/MaterialFactory.hpp"
 #include "solver/GridSystem.hpp"
@@ -180,8 +181,10 @@ std::vector<std::string> Simulation<Dim>::run() {
                 << "  |R| " << std::scientific << std::setprecision(2)
                 << r.newton.residualNorms.back() << std::defaultfloat << "  F0 " << format(F[0])
                 << "  FL " << format(F[1]) << "\n";
-    if (output->due(r.step) || r.last)
+    if (output->due(r.step) || r.last) {
+      IMPM_TIMER("output");
       collectively(*comm_, [&] { output->writeFields(r.time, particles_, gridDisplacement, F); });
+    }
     finalTime = r.time;
   });
 
@@ -203,6 +206,9 @@ std::vector<std::string> Simulation<Dim>::run() {
       std::cout << " " << f;
     std::cout << " " << path << "\n";
   }
+  if (deck_.sublist("Output").get<bool>("Timers"))
+    Teuchos::TimeMonitor::summarize(comm_.ptr(), std::cout, false, true, false, Teuchos::Union,
+                                    "impm: ");
   return result.failures;
 }
 

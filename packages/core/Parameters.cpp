@@ -4,6 +4,7 @@
 #include <Teuchos_StrUtils.hpp>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <iomanip>
 #include <ostream>
@@ -33,9 +34,29 @@ std::string childPath(const std::string& path, const std::string& name) {
   return path.empty() ? name : path + "/" + name;
 }
 
+// A value as a user would write it: {0, 1.5} for arrays, true/false for bools.
 std::string shortValue(const ParameterEntry& entry) {
   std::ostringstream s;
-  entry.leftshift(s, false);
+  s << std::setprecision(10);
+  if (entry.isType<bool>()) {
+    s << (Teuchos::getValue<bool>(entry) ? "true" : "false");
+  } else if (entry.isType<Array<double>>() || entry.isType<Array<int>>()) {
+    s << "{";
+    if (entry.isType<Array<double>>()) {
+      const auto& a = Teuchos::getValue<Array<double>>(entry);
+      for (decltype(a.size()) k = 0; k < a.size(); ++k)
+        s << (k ? ", " : "") << a[k];
+    } else {
+      const auto& a = Teuchos::getValue<Array<int>>(entry);
+      for (decltype(a.size()) k = 0; k < a.size(); ++k)
+        s << (k ? ", " : "") << a[k];
+    }
+    s << "}";
+  } else if (entry.isType<std::string>() && Teuchos::getValue<std::string>(entry).empty()) {
+    s << "\"\"";
+  } else {
+    entry.leftshift(s, false);
+  }
   std::string v = s.str();
   return v.size() > 60 ? v.substr(0, 57) + "..." : v;
 }
@@ -449,6 +470,44 @@ bool findValidEntry(const ParameterList& valid, const ParameterList& user, const
   return findValidEntry(validSub, userSub, path.substr(slash + 1), found);
 }
 
+bool insideOpaqueList(const ParameterList& valid, const ParameterList& user,
+                      const std::string& path) {
+  if (isOpaque(valid))
+    return true;
+  const auto slash = path.find('/');
+  if (slash == std::string::npos)
+    return false;
+  const std::string head = path.substr(0, slash);
+  ParameterList userCopy(user);
+  const ParameterList effective = effectiveValidList(userCopy, valid, "");
+  const ParameterEntry* entry = effective.getEntryPtr(head);
+  if (!entry && effective.isSublist("<name>"))
+    entry = effective.getEntryPtr("<name>");
+  if (!entry || !entry->isList())
+    return false;
+  const ParameterList userSub = user.isSublist(head) ? user.sublist(head) : ParameterList();
+  return insideOpaqueList(Teuchos::getValue<ParameterList>(*entry), userSub,
+                          path.substr(slash + 1));
+}
+
+ParameterEntry parseByText(const std::string& text) {
+  ParameterEntry entry;
+  char* end = nullptr;
+  const long integer = std::strtol(text.c_str(), &end, 10);
+  if (!text.empty() && *end == '\0' && integer >= INT_MIN && integer <= INT_MAX) {
+    entry.setValue(static_cast<int>(integer));
+    return entry;
+  }
+  const double number = std::strtod(text.c_str(), &end);
+  if (!text.empty() && *end == '\0')
+    entry.setValue(number);
+  else if (text == "true" || text == "false")
+    entry.setValue(text == "true");
+  else
+    entry.setValue(text);
+  return entry;
+}
+
 ParameterEntry parseLike(const ParameterEntry& prototype, const std::string& text,
                          const std::string& path) {
   ParameterEntry entry;
@@ -500,7 +559,11 @@ ParameterEntry parseLike(const ParameterEntry& prototype, const std::string& tex
   return entry;
 }
 
-void listParameters(const ParameterList& valid, std::ostream& out, const std::string& path) {
+namespace {
+
+// `condition`: "Model = cubic" for the parameters of a variant list, else empty.
+void listEntries(const ParameterList& valid, std::ostream& out, const std::string& path,
+                 const std::string& condition) {
   if (isOpaque(valid)) {
     out << path << "/...\n    " << valid.getEntry(kOpaque).docString() << "\n\n";
     return;
@@ -511,8 +574,11 @@ void listParameters(const ParameterList& valid, std::ostream& out, const std::st
     if (entry.isList())
       continue;
     auto validator = Teuchos::rcp_dynamic_cast<const Validator>(entry.validator());
-    out << childPath(path, name) << "  (" << xmlTypeName(entry) << ", "
-        << (isRequired(entry) ? "required, e.g. " : "default ") << shortValue(entry) << ")\n";
+    const bool formula =
+        Teuchos::rcp_dynamic_cast<const FormulaValidator>(validator) != Teuchos::null;
+    out << childPath(path, name) << "  (" << (formula ? "double or string" : xmlTypeName(entry))
+        << ", " << (isRequired(entry) ? "required, e.g. " : "default ") << shortValue(entry)
+        << (condition.empty() ? "" : "; only when " + condition) << ")\n";
     out << "    " << entry.docString();
     if (validator)
       out << " [" << validator->describe() << "]";
@@ -523,11 +589,19 @@ void listParameters(const ParameterList& valid, std::ostream& out, const std::st
     if (!valid.entry(it).isList())
       continue;
     if (isVariant(name)) {
-      out << childPath(path, name) << "\n    Only when " << name.substr(1, name.size() - 2)
-          << ".\n\n";
+      std::string c = name.substr(1, name.size() - 2);
+      c.replace(c.find('='), 1, " = ");
+      listEntries(valid.sublist(name), out, path, c);
+    } else {
+      listEntries(valid.sublist(name), out, childPath(path, name), condition);
     }
-    listParameters(valid.sublist(name), out, childPath(path, name));
   }
+}
+
+}  // namespace
+
+void listParameters(const ParameterList& valid, std::ostream& out, const std::string& path) {
+  listEntries(valid, out, path, "");
 }
 
 std::string xmlTypeName(const ParameterEntry& entry) {

@@ -100,6 +100,15 @@ void validateParameters(Teuchos::ParameterList& user, const Teuchos::ParameterLi
 bool findValidEntry(const Teuchos::ParameterList& valid, const Teuchos::ParameterList& user,
                     const std::string& path, Teuchos::ParameterEntry& found);
 
+// True when `path` lies inside an opaque sublist (a Stratimikos or NOX list), whose entries
+// have no declared type.
+bool insideOpaqueList(const Teuchos::ParameterList& valid, const Teuchos::ParameterList& user,
+                      const std::string& path);
+
+// A value typed by its text alone: true/false a bool, an integer an int, a number a double,
+// anything else a string.  For entries of opaque lists.
+Teuchos::ParameterEntry parseByText(const std::string& text);
+
 // Parses `text` into a value of the same type as `prototype` (Teuchos array syntax for
 // arrays); throws InputError(path, ...) when it does not fit.
 Teuchos::ParameterEntry parseLike(const Teuchos::ParameterEntry& prototype, const std::string& text,

@@ -31,10 +31,13 @@ Teuchos::ParameterList readXml(const std::string& file) {
 void applyOverride(Teuchos::ParameterList& deck, const Override& o,
                    const Teuchos::ParameterList& valid) {
   const std::string where = "--set " + o.path;
-  Teuchos::ParameterEntry prototype;
-  if (!findValidEntry(valid, deck, o.path, prototype))
+  Teuchos::ParameterEntry prototype, entry;
+  if (insideOpaqueList(valid, deck, o.path))
+    entry = parseByText(o.value);  // checked later by the list's owner (Stratimikos, NOX)
+  else if (findValidEntry(valid, deck, o.path, prototype))
+    entry = parseLike(prototype, o.value, o.path);
+  else
     throw InputError(o.path, "unknown parameter (in " + where + ")");
-  Teuchos::ParameterEntry entry = parseLike(prototype, o.value, o.path);
   Teuchos::ParameterList* list = &deck;
   std::string rest = o.path;
   for (auto slash = rest.find('/'); slash != std::string::npos; slash = rest.find('/')) {

@@ -5,6 +5,7 @@
 #include "assembly/Graph.hpp"
 #include "core/Collective.hpp"
 #include "core/Errors.hpp"
+#include "core/Timers.hpp"
 
 #include <sstream>
 
@@ -36,6 +37,7 @@ ParticleGridMap<Dim> buildMapCollectively(const NodeOwnership<Dim>& ownership, M
   ParticleSet<Dim> at = particles;  // views: a shallow copy
   if (kinematics == Kinematics::totalLagrangian)
     at.x = particles.X, at.domain = particles.domain0;
+  IMPM_TIMER("particle-grid map");
   ParticleGridMap<Dim> map;
   collectively(*ownership.comm(),
                [&] { map = buildParticleGridMap(method, ownership.grid(), at); });
@@ -68,7 +70,10 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
   for (std::size_t c = 0; c < contributions_.size(); ++c)
     contributions_[c]->couplings(context(static_cast<int>(c)), couplings);
   checkEveryActiveNodeIsIntegrated();
-  graph_ = buildGraph(map_, entryDofs_, dofs_, couplings);
+  {
+    IMPM_TIMER("graph");
+    graph_ = buildGraph(map_, entryDofs_, dofs_, couplings);
+  }
   entryCols_ = impm::entryDofs(map_, *graph_->getColMap());
   importer_ = Teuchos::rcp(new Import(dofs_.ownedMap(), dofs_.overlapMap()));
   const std::size_t n = particles.size();
@@ -167,6 +172,7 @@ void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jac
   auto xo = toOverlap(x);
   auto xHost = xo->getLocalViewHost(Tpetra::Access::ReadOnly);
   if (residual) {
+    IMPM_TIMER("residual");
     FEMultiVector f(dofs_.ownedMap(), importer_, 1);
     f.beginAssembly();
     {
@@ -184,6 +190,7 @@ void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jac
     Tpetra::deep_copy(*residual, *f.getVector(0));
   }
   if (jacobian) {
+    IMPM_TIMER("Jacobian");
     auto& J = dynamic_cast<FECrsMatrix&>(*jacobian);
     J.beginAssembly();
     J.setAllToScalar(0.0);

@@ -6,6 +6,7 @@
 
 #include "assembly/ParticleUpdate.hpp"
 #include "core/Errors.hpp"
+#include "core/Timers.hpp"
 
 namespace impm {
 
@@ -32,7 +33,11 @@ void QuasiStaticStepper<Dim>::run(const StepCallback& onStep) {
                                                    ctx_.particles, ctx_.materials,
                                                    ctx_.contributions, time_, target));
     auto du = system->initialGuess();
-    const NewtonReport report = ctx_.newton.solve(system, *du);
+    NewtonReport report;
+    {
+      IMPM_TIMER("Newton solve");
+      report = ctx_.newton.solve(system, *du);
+    }
     if (!report.converged) {
       std::ostringstream history;
       for (double r : report.residualNorms)
@@ -51,6 +56,7 @@ void QuasiStaticStepper<Dim>::run(const StepCallback& onStep) {
     }
     system->commit(*du);
     {
+      IMPM_TIMER("particle update");
       typename ParticleSet<Dim>::Tensors F("F", ctx_.particles.size()),
           P("P", ctx_.particles.size());
       system->trialState(*du, F, P);

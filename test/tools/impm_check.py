@@ -14,6 +14,7 @@ import argparse
 import csv
 import math
 import os
+import re
 import shlex
 import shutil
 import subprocess
@@ -142,6 +143,26 @@ def fails(args):
     sys.exit(1 if problems else 0)
 
 
+def docs(args):
+    """Every parameter of --list-parameters is in the guide, and the guide names no other."""
+    r = subprocess.run([args.impm, "--list-parameters"], capture_output=True, text=True)
+    listed = set()
+    for line in r.stdout.splitlines():
+        if line and not line.startswith(" "):
+            listed.add(line.split("  (")[0])
+    guide = open(args.guide).read()
+    documented = set(re.findall(r"`((?:[A-Z][A-Za-z ]*/)+[^`]+)`", guide))
+    documented = {d for d in documented if d.split("/")[0] in {p.split("/")[0] for p in listed}}
+    missing = sorted(listed - documented)
+    stale = sorted(documented - listed)
+    for m in missing:
+        print("FAIL: not in %s: %s" % (args.guide, m))
+    for s in stale:
+        print("FAIL: %s documents %s, which impm does not have" % (args.guide, s))
+    print("%d parameters listed, %d documented" % (len(listed), len(documented)))
+    sys.exit(1 if missing or stale else 0)
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--impm", required=True, help="the impm executable")
@@ -176,8 +197,11 @@ def main():
     f.add_argument("--np", type=int, default=1)
     f.add_argument("--set", action="append", default=[])
 
+    d = sub.add_parser("docs")
+    d.add_argument("--guide", required=True)
+
     args = p.parse_args()
-    {"convergence": convergence, "ranks": ranks, "fails": fails}[args.check](args)
+    {"convergence": convergence, "ranks": ranks, "fails": fails, "docs": docs}[args.check](args)
 
 
 if __name__ == "__main__":
