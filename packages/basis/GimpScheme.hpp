@@ -50,15 +50,7 @@ struct GimpScheme {
       n[d] = tentAverage(a - node[d], b - node[d]);
       dn[d] = (tent(b - node[d]) - tent(a - node[d])) / ((b - a) * grid.spacing[d]);
     }
-    phi = 1.0;
-    for (int d = 0; d < Dim; ++d)
-      phi *= n[d];
-    for (int d = 0; d < Dim; ++d) {
-      grad[d] = dn[d];
-      for (int e = 0; e < Dim; ++e)
-        if (e != d)
-          grad[d] *= n[e];
-    }
+    tensorProduct<Dim>(n, dn, phi, grad);
   }
 };
 

@@ -37,15 +37,7 @@ struct PointScheme {
       n[d] = left ? 1.0 - s : s;
       dn[d] = (left ? -1.0 : 1.0) / grid.spacing[d];
     }
-    phi = 1.0;
-    for (int d = 0; d < Dim; ++d)
-      phi *= n[d];
-    for (int d = 0; d < Dim; ++d) {
-      grad[d] = dn[d];
-      for (int e = 0; e < Dim; ++e)
-        if (e != d)
-          grad[d] *= n[e];
-    }
+    tensorProduct<Dim>(n, dn, phi, grad);
   }
 };
 

@@ -25,6 +25,22 @@ KOKKOS_INLINE_FUNCTION double tentIntegral(double s) {
   return 1.0;
 }
 
+// Multi-dimensional weights from per-direction ones: the tents are tensor products, so
+// phi = prod_d n_d and grad_d = dn_d prod_(e != d) n_e.
+template <int Dim>
+KOKKOS_INLINE_FUNCTION void tensorProduct(const double n[Dim], const double dn[Dim], double& phi,
+                                          double grad[Dim]) {
+  phi = 1.0;
+  for (int d = 0; d < Dim; ++d)
+    phi *= n[d];
+  for (int d = 0; d < Dim; ++d) {
+    grad[d] = dn[d];
+    for (int e = 0; e < Dim; ++e)
+      if (e != d)
+        grad[d] *= n[e];
+  }
+}
+
 // Average of the tent over [a, b] (grid units); the tent value itself when b == a.
 KOKKOS_INLINE_FUNCTION double tentAverage(double a, double b) {
   return b > a ? (tentIntegral(b) - tentIntegral(a)) / (b - a) : tent(a);

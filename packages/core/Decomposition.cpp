@@ -55,51 +55,62 @@ int Decomposition<Dim>::blockOf(int d, int cell) const {
 }
 
 template <int Dim>
+int Decomposition<Dim>::rankOfBlockIndex(const int cellIndex[Dim]) const {
+  int rank = 0;
+  for (int d = Dim - 1; d >= 0; --d)
+    rank = rank * blocks_[d] + blockOf(d, cellIndex[d]);
+  return rank;
+}
+
+template <int Dim>
 int Decomposition<Dim>::ownerOfCell(GlobalId cell) const {
   int idx[Dim];
   grid_.cellIndex(cell, idx);
-  int rank = 0;
-  for (int d = Dim - 1; d >= 0; --d)
-    rank = rank * blocks_[d] + blockOf(d, idx[d]);
-  return rank;
+  return rankOfBlockIndex(idx);
 }
 
 template <int Dim>
 int Decomposition<Dim>::ownerOfNode(GlobalId node) const {
   int idx[Dim];
   grid_.nodeIndex(node, idx);
-  int rank = 0;
-  for (int d = Dim - 1; d >= 0; --d)
-    rank = rank * blocks_[d] + blockOf(d, std::min(idx[d], grid_.cells[d] - 1));
-  return rank;
+  for (int d = 0; d < Dim; ++d)
+    idx[d] = std::min(idx[d], grid_.cells[d] - 1);
+  return rankOfBlockIndex(idx);
 }
 
 template <int Dim>
 int Decomposition<Dim>::ownerOfPoint(const double x[Dim]) const {
-  int rank = 0;
-  for (int d = Dim - 1; d >= 0; --d)
-    rank = rank * blocks_[d] + blockOf(d, grid_.cellAlong(d, x[d]));
-  return rank;
+  int idx[Dim];
+  for (int d = 0; d < Dim; ++d)
+    idx[d] = grid_.cellAlong(d, x[d]);
+  return rankOfBlockIndex(idx);
 }
 
 template <int Dim>
-std::vector<GlobalId> Decomposition<Dim>::ownedNodes(int rank) const {
-  std::vector<GlobalId> nodes;
-  const GlobalId n = grid_.numNodes();
-  for (GlobalId id = 0; id < n; ++id)
-    if (ownerOfNode(id) == rank)
-      nodes.push_back(id);
-  return nodes;
-}
-
-template <int Dim>
-std::vector<GlobalId> Decomposition<Dim>::ownedCells(int rank) const {
-  std::vector<GlobalId> cells;
-  const GlobalId n = grid_.numCells();
-  for (GlobalId id = 0; id < n; ++id)
-    if (ownerOfCell(id) == rank)
-      cells.push_back(id);
-  return cells;
+std::vector<GlobalId> Decomposition<Dim>::owned(int rank, bool nodes) const {
+  // The rank's block of cells is [start_[d][b], start_[d][b + 1]) along each direction; its
+  // nodes are the same range, plus the last node of the grid for the last block.
+  int lo[Dim], hi[Dim];
+  for (int d = 0, r = rank; d < Dim; ++d) {
+    const int b = r % blocks_[d];
+    r /= blocks_[d];
+    lo[d] = start_[d][b];
+    hi[d] = start_[d][b + 1] + ((nodes && b == blocks_[d] - 1) ? 1 : 0);
+  }
+  std::vector<GlobalId> ids;
+  int idx[Dim];
+  for (int d = 0; d < Dim; ++d)
+    idx[d] = lo[d];
+  while (true) {
+    ids.push_back(nodes ? grid_.nodeId(idx) : grid_.cellId(idx));
+    int d = 0;
+    while (d < Dim && ++idx[d] == hi[d])
+      idx[d] = lo[d], ++d;
+    if (d == Dim)
+      break;
+  }
+  std::sort(ids.begin(), ids.end());
+  return ids;
 }
 
 template class Decomposition<1>;

@@ -25,12 +25,14 @@ class Decomposition {
   int ownerOfPoint(const double x[Dim]) const;
 
   // Nodes owned by `rank`, ascending.
-  std::vector<GlobalId> ownedNodes(int rank) const;
+  std::vector<GlobalId> ownedNodes(int rank) const { return owned(rank, true); }
   // Cells owned by `rank`, ascending.
-  std::vector<GlobalId> ownedCells(int rank) const;
+  std::vector<GlobalId> ownedCells(int rank) const { return owned(rank, false); }
 
  private:
   int blockOf(int d, int cell) const;
+  int rankOfBlockIndex(const int cellIndex[Dim]) const;
+  std::vector<GlobalId> owned(int rank, bool nodes) const;
 
   GridGeometry<Dim> grid_;
   int numRanks_;

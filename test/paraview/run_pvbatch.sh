@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # Runs a ParaView Python script with pvbatch under a private virtual X server (Debian's
 # ParaView needs a display to render; xvfb-run alone proved unreliable, and pvpython's
-# rendering fails with GLXBadContext there).  usage: run_pvbatch.sh script.py args...
+# rendering fails with GLXBadContext there).  Xvfb picks a free display itself and
+# reports it once it is ready (-displayfd).  usage: run_pvbatch.sh script.py args...
 set -euo pipefail
-display=$(( 100 + RANDOM % 800 ))
-Xvfb ":$display" -screen 0 1280x1024x24 -nolisten tcp >/dev/null 2>&1 &
+ready=$(mktemp)
+Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp 3>"$ready" >/dev/null 2>&1 &
 xvfb=$!
-trap 'kill $xvfb 2>/dev/null || true' EXIT
-for _ in $(seq 50); do [ -e "/tmp/.X11-unix/X$display" ] && break; sleep 0.1; done
-DISPLAY=":$display" pvbatch "$@"
+trap 'kill $xvfb 2>/dev/null || true; rm -f "$ready"' EXIT
+for _ in $(seq 200); do [ -s "$ready" ] && break; sleep 0.05; done
+[ -s "$ready" ] || { echo "Xvfb did not start" >&2; exit 1; }
+DISPLAY=":$(head -n1 "$ready")" pvbatch "$@"
