@@ -3,6 +3,7 @@
 #include "app/Bodies.hpp"
 #include "app/BoundaryConditions.hpp"
 #include "app/Output.hpp"
+#include "app/TimeIntegration.hpp"
 #include "app/Verification.hpp"
 #include "basis/Method.hpp"
 #include "core/Parameters.hpp"
@@ -40,20 +41,6 @@ Teuchos::ParameterList gridParameters() {
   return valid;
 }
 
-Teuchos::ParameterList timeIntegrationParameters() {
-  Teuchos::ParameterList valid;
-  declareChoice(valid, "Type", "static", {"static"},
-                "static: quasi-static load stepping (no inertia)");
-  declareDouble(valid, "Final Time", 1.0,
-                "Time at which formulas of t are evaluated in static runs", Bounds::positive());
-  auto& statics = valid.sublist("[Type=static]");
-  declareInt(statics, "Load Steps", 1, "Equal load increments from 0 to the full loads",
-             Bounds::atLeast(1));
-  declareDouble(statics, "Minimum Load Increment", 1e-4,
-                "Smallest load increment a failed step may be cut to", Bounds::positive());
-  return valid;
-}
-
 }  // namespace
 
 Teuchos::ParameterList deckValidParameters() {
@@ -67,7 +54,8 @@ Teuchos::ParameterList deckValidParameters() {
       bodyValidParameters();
   valid.sublist("Boundary Conditions", false, "Boundary conditions, one sublist each")
       .sublist("<name>") = boundaryConditionValidParameters();
-  valid.sublist("Time Integration") = timeIntegrationParameters();
+  valid.sublist("Time Integration", false, "Static load stepping or time stepping") =
+      timeIntegrationValidParameters();
   valid.sublist("Solver", false, "Newton and linear solvers") = NewtonSolver::validParameters();
   valid.sublist("Output") = outputValidParameters();
   valid.sublist("Verification", false, "Checks against known answers") =

@@ -1,5 +1,6 @@
 #include "app/Bodies.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -19,6 +20,11 @@ Teuchos::ParameterList bodyValidParameters() {
              Bounds::atLeast(1));
   declareFormula(valid, "Section", "1", {"x"},
                  "1-D: cross-section area A(x) at the reference position x", Bounds::positive());
+  declareFormula(valid, "Initial Velocity", "0", {"x", "X"},
+                 "1-D: initial velocity at current position x and reference position X");
+  declareFormula(valid, "Initial Displacement", "0", {"X"},
+                 "1-D: initial displacement u0(X); particles start at X + u0 with F = 1 + u0' "
+                 "(a centred difference of the formula)");
   declareFormula(valid, "Distributed Load", "0", {"x", "X", "t"},
                  "1-D: distributed load f (force per unit length, primer eq. 1.1) at current "
                  "position x, reference position X and time t");
@@ -100,6 +106,8 @@ Bodies<Dim>::Bodies(const Teuchos::ParameterList& deck,
     b.particlesPerCell = p.get<int>("Particles Per Cell");
     b.section = Formula(formulaText(p, "Section"), {"x"});
     b.load = Formula(formulaText(p, "Distributed Load"), {"x", "X", "t"});
+    b.velocity = Formula(formulaText(p, "Initial Velocity"), {"x", "X"});
+    b.displacement = Formula(formulaText(p, "Initial Displacement"), {"X"});
     bodies_.push_back(std::move(b));
   }
   if (bodies_.empty())
@@ -117,7 +125,7 @@ int Bodies<Dim>::find(const std::string& name) const {
 template <int Dim>
 ParticleSet<Dim> Bodies<Dim>::createParticles(
     Method method, const Decomposition<Dim>& decomposition, int rank,
-    const std::vector<std::shared_ptr<Material<Dim>>>& materials) const {
+    const std::vector<std::shared_ptr<Material<Dim>>>& materials, bool displaced) const {
   static_assert(Dim == 1, "2-D bodies are not implemented yet");
   struct Local {
     Point point;
@@ -145,6 +153,11 @@ ParticleSet<Dim> Bodies<Dim>::createParticles(
   auto mass = Kokkos::create_mirror_view(ps.mass);
   auto F = Kokkos::create_mirror_view(ps.F);
   auto domain = Kokkos::create_mirror_view(ps.domain);
+  auto domain0 = Kokkos::create_mirror_view(ps.domain0);
+  auto x = Kokkos::create_mirror_view(ps.x);
+  auto u = Kokkos::create_mirror_view(ps.u);
+  auto v = Kokkos::create_mirror_view(ps.v);
+  auto volume0 = Kokkos::create_mirror_view(ps.volume0);
   for (std::size_t p = 0; p < mine.size(); ++p) {
     const Body& b = bodies_[mine[p].body];
     id(p) = mine[p].id;
@@ -158,16 +171,56 @@ ParticleSet<Dim> Bodies<Dim>::createParticles(
                        "must be > 0, but is " + std::to_string(section(p)) +
                            " at x = " + std::to_string(mine[p].point.x));
     mass(p) = materials[b.material]->density() * section(p) * volume(p);
+    volume0(p) = volume(p);
+    domain0(p, 0, 0) = mine[p].point.halfLength;
     F(p, 0, 0) = 1.0;
-    domain(p, 0, 0) = mine[p].point.halfLength;
+    if (displaced && !b.displacement.isConstant()) {
+      const double Xp = X(p, 0), delta = 1e-6 * std::max(1.0, std::abs(Xp));
+      u(p, 0) = b.displacement(Xp);
+      F(p, 0, 0) = 1.0 + (b.displacement(Xp + delta) - b.displacement(Xp - delta)) / (2 * delta);
+      if (!(F(p, 0, 0) > 0))
+        throw InputError("Bodies/" + b.name + "/Initial Displacement",
+                         "gives F = 1 + du/dX <= 0 at X = " + std::to_string(Xp));
+    }
+    x(p, 0) = X(p, 0) + u(p, 0);
+    volume(p) = F(p, 0, 0) * volume0(p);
+    domain(p, 0, 0) = F(p, 0, 0) * domain0(p, 0, 0);
+    v(p, 0) = b.velocity(x(p, 0), X(p, 0));
   }
   Kokkos::deep_copy(ps.id, id), Kokkos::deep_copy(ps.body, body);
   Kokkos::deep_copy(ps.material, material), Kokkos::deep_copy(ps.X, X);
-  Kokkos::deep_copy(ps.x, X), Kokkos::deep_copy(ps.volume, volume);
-  Kokkos::deep_copy(ps.volume0, volume), Kokkos::deep_copy(ps.section, section);
+  Kokkos::deep_copy(ps.x, x), Kokkos::deep_copy(ps.volume, volume);
+  Kokkos::deep_copy(ps.volume0, volume0), Kokkos::deep_copy(ps.section, section);
   Kokkos::deep_copy(ps.mass, mass), Kokkos::deep_copy(ps.F, F);
-  Kokkos::deep_copy(ps.domain, domain), Kokkos::deep_copy(ps.domain0, domain);
+  Kokkos::deep_copy(ps.domain, domain), Kokkos::deep_copy(ps.domain0, domain0);
+  Kokkos::deep_copy(ps.u, u), Kokkos::deep_copy(ps.v, v);
   return ps;
+}
+
+template <int Dim>
+void Bodies<Dim>::initialNodalState(const double* x, double* u, double* v) const {
+  std::size_t best = 0;
+  double distance = 1e300;
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const double d = std::max({bodies_[b].lower - x[0], x[0] - bodies_[b].upper, 0.0});
+    if (d < distance)
+      distance = d, best = b;
+  }
+  u[0] = bodies_[best].displacement(x[0]);
+  v[0] = bodies_[best].velocity(x[0] + u[0], x[0]);
+}
+
+template <int Dim>
+std::vector<std::string> Bodies<Dim>::columnNames() const {
+  std::vector<std::string> names;
+  for (const auto& b : bodies_) {
+    std::string n = b.name;
+    for (char& c : n)
+      if (c == ' ' || c == ',')
+        c = '_';
+    names.push_back(n);
+  }
+  return names;
 }
 
 template <int Dim>

@@ -26,8 +26,10 @@ struct Body {
   double lower = 0.0;  // 1-D: the interval [lower, upper]
   double upper = 0.0;
   int particlesPerCell = 2;
-  Formula section;  // A(x)
-  Formula load;     // distributed load f(x, X, t)
+  Formula section;       // A(x)
+  Formula load;          // distributed load f(x, X, t)
+  Formula velocity;      // initial velocity v(x, X)
+  Formula displacement;  // initial displacement u0(X)
 };
 
 template <int Dim>
@@ -41,10 +43,19 @@ class Bodies {
   // Index of the body called `name`, or -1.
   int find(const std::string& name) const;
 
-  // The integration points of every body that lie on `rank`.
-  ParticleSet<Dim> createParticles(
-      Method method, const Decomposition<Dim>& decomposition, int rank,
-      const std::vector<std::shared_ptr<Material<Dim>>>& materials) const;
+  // The integration points of every body that lie on `rank`, with the initial velocity.
+  // `displaced`: they also take the initial displacement (x = X + u0, F = 1 + u0');
+  // otherwise the stepper applies it through the grid (total Lagrangian).
+  ParticleSet<Dim> createParticles(Method method, const Decomposition<Dim>& decomposition, int rank,
+                                   const std::vector<std::shared_ptr<Material<Dim>>>& materials,
+                                   bool displaced) const;
+
+  // The initial displacement and velocity at node position x: those of the body that holds
+  // x, or else of the nearest body (FEM's nodal initial conditions).
+  void initialNodalState(const double* x, double* u, double* v) const;
+
+  // Body names usable in column headers (spaces become underscores).
+  std::vector<std::string> columnNames() const;
 
   // Sets particles.force to the distributed loads at `time` (force per unit length times
   // the particle length in 1-D).

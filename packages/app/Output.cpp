@@ -31,28 +31,56 @@ const std::vector<double>& ParticleTable::column(const std::string& name) const 
 
 namespace {
 
-// The columns of the particle table, and how to read each from particle p.
+// One column of the particle table: its CSV name, its Exodus element-variable name (empty:
+// not an element variable) and how to read it from the host mirrors.
 template <int Dim>
-std::vector<std::string> particleColumns() {
-  static_assert(Dim == 1, "2-D output is not implemented yet");
-  return {"id", "X", "x", "u", "strain", "stress", "volume", "mass", "section", "body"};
-}
+struct Mirrors {
+  explicit Mirrors(const ParticleSet<Dim>& ps)
+      : id(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.id)),
+        body(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.body)),
+        X(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.X)),
+        x(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.x)),
+        u(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.u)),
+        v(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.v)),
+        a(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.a)),
+        F(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.F)),
+        stress(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.stress)),
+        volume(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.volume)),
+        mass(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.mass)),
+        section(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.section)) {}
+  typename Kokkos::View<GlobalId*>::HostMirror id;
+  typename Kokkos::View<int*>::HostMirror body;
+  typename ParticleSet<Dim>::Vectors::HostMirror X, x, u, v, a;
+  typename ParticleSet<Dim>::Tensors::HostMirror F, stress;
+  typename ParticleSet<Dim>::Scalars::HostMirror volume, mass, section;
+};
 
 template <int Dim>
-std::vector<double> particleRow(const ParticleSet<Dim>& ps, std::size_t p,
-                                const typename ParticleSet<Dim>::Vectors::HostMirror& X,
-                                const typename ParticleSet<Dim>::Vectors::HostMirror& x,
-                                const typename ParticleSet<Dim>::Vectors::HostMirror& u,
-                                const typename ParticleSet<Dim>::Tensors::HostMirror& F,
-                                const typename ParticleSet<Dim>::Tensors::HostMirror& stress,
-                                const typename ParticleSet<Dim>::Scalars::HostMirror& volume,
-                                const typename ParticleSet<Dim>::Scalars::HostMirror& mass,
-                                const typename ParticleSet<Dim>::Scalars::HostMirror& section,
-                                const Kokkos::View<int*>::HostMirror& body,
-                                const Kokkos::View<GlobalId*>::HostMirror& id) {
-  (void)ps;
-  return {double(id(p)),   X(p, 0),   x(p, 0), u(p, 0),    F(p, 0, 0) - 1.0,
-          stress(p, 0, 0), volume(p), mass(p), section(p), double(body(p))};
+struct Column {
+  std::string csv, exodus;
+  std::function<double(const Mirrors<Dim>&, std::size_t)> read;
+};
+
+// 1-D: id,X,x,u,strain,stress,volume,v,a,mass,section,body.  X is the Exodus coordinate and
+// u its nodal displacementX, so neither is an element variable.
+template <int Dim>
+std::vector<Column<Dim>> particleColumns() {
+  static_assert(Dim == 1, "2-D output is not implemented yet");
+  using M = Mirrors<Dim>;
+  return {
+      {"id", "", [](const M& m, std::size_t p) { return double(m.id(p)); }},
+      {"X", "", [](const M& m, std::size_t p) { return m.X(p, 0); }},
+      {"x", "", [](const M& m, std::size_t p) { return m.x(p, 0); }},
+      {"u", "", [](const M& m, std::size_t p) { return m.u(p, 0); }},
+      {"strain", "strain", [](const M& m, std::size_t p) { return m.F(p, 0, 0) - 1.0; }},
+      {"stress", "stress", [](const M& m, std::size_t p) { return m.stress(p, 0, 0); }},
+      {"volume", "volume", [](const M& m, std::size_t p) { return m.volume(p); }},
+      {"v", "velocityX", [](const M& m, std::size_t p) { return m.v(p, 0); }},
+      {"a", "accelerationX", [](const M& m, std::size_t p) { return m.a(p, 0); }},
+      {"mass", "mass", [](const M& m, std::size_t p) { return m.mass(p); }},
+      {"section", "section", [](const M& m, std::size_t p) { return m.section(p); }},
+      {"body", "body", [](const M& m, std::size_t p) { return double(m.body(p)); }},
+  };
 }
 
 // A map with every index 0..n-1 on rank 0 and nothing elsewhere.
@@ -61,13 +89,32 @@ Teuchos::RCP<const Map> rootMap(GlobalId n, const Teuchos::RCP<const Comm>& comm
   return Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(n), local, 0, comm));
 }
 
-std::vector<std::vector<double>> columnsOf(const MultiVector& mv) {
-  std::vector<std::vector<double>> out(mv.getNumVectors());
-  for (std::size_t c = 0; c < mv.getNumVectors(); ++c) {
+std::vector<std::vector<double>> columnsOf(const MultiVector& mv, std::size_t count) {
+  std::vector<std::vector<double>> out(count);
+  for (std::size_t c = 0; c < count; ++c) {
     auto data = mv.getData(c);
     out[c].assign(data.begin(), data.end());
   }
   return out;
+}
+
+template <int Dim>
+std::vector<std::string> exodusElementVariables() {
+  std::vector<std::string> names;
+  for (const auto& c : particleColumns<Dim>())
+    if (!c.exodus.empty())
+      names.push_back(c.exodus);
+  return names;
+}
+
+template <int Dim>
+std::vector<std::vector<double>> exodusElementValues(const ParticleTable& table) {
+  std::vector<std::vector<double>> values;
+  const auto columns = particleColumns<Dim>();
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    if (!columns[c].exodus.empty())
+      values.push_back(table.columns[c]);
+  return values;
 }
 
 }  // namespace
@@ -75,33 +122,25 @@ std::vector<std::vector<double>> columnsOf(const MultiVector& mv) {
 template <int Dim>
 ParticleTable gatherParticles(const ParticleSet<Dim>& ps, const Teuchos::RCP<const Comm>& comm,
                               GlobalId totalParticles) {
-  ParticleTable table;
-  table.names = particleColumns<Dim>();
-  const std::size_t n = ps.size(), ncol = table.names.size();
-  auto id = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.id);
-  auto X = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.X);
-  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.x);
-  auto u = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.u);
-  auto F = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.F);
-  auto stress = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.stress);
-  auto volume = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.volume);
-  auto mass = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.mass);
-  auto section = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.section);
-  auto body = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.body);
-
-  std::vector<GO> gids(id.data(), id.data() + n);
+  const auto columns = particleColumns<Dim>();
+  const Mirrors<Dim> mirrors(ps);
+  const std::size_t n = ps.size();
+  std::vector<GO> gids(mirrors.id.data(), mirrors.id.data() + n);
   auto source = Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(totalParticles),
                                      Teuchos::ArrayView<const GO>(gids), 0, comm));
-  MultiVector local(source, ncol);
-  for (std::size_t p = 0; p < n; ++p) {
-    const auto row = particleRow<Dim>(ps, p, X, x, u, F, stress, volume, mass, section, body, id);
-    for (std::size_t c = 0; c < ncol; ++c)
-      local.replaceLocalValue(static_cast<LO>(p), c, row[c]);
+  MultiVector local(source, columns.size());
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    auto data = local.getDataNonConst(c);
+    for (std::size_t p = 0; p < n; ++p)
+      data[p] = columns[c].read(mirrors, p);
   }
   auto target = rootMap(totalParticles, comm);
-  MultiVector gathered(target, ncol);
+  MultiVector gathered(target, columns.size());
   gathered.doImport(local, Import(source, target), Tpetra::INSERT);
-  table.columns = columnsOf(gathered);
+  ParticleTable table;
+  for (const auto& c : columns)
+    table.names.push_back(c.csv);
+  table.columns = columnsOf(gathered, columns.size());
   return table;
 }
 
@@ -110,6 +149,7 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
                     const std::string& prefix, const NodeOwnership<Dim>& ownership,
                     const ParticleSet<Dim>& particles, GlobalId totalParticles,
                     const std::vector<std::string>& historyColumns,
+                    const std::vector<std::string>& gridFieldNames,
                     const std::vector<std::string>& globalNames)
     : ownership_(ownership),
       root_(ownership.comm()->getRank() == 0),
@@ -117,6 +157,7 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
       exodus_(params.get<bool>("Exodus")),
       csv_(params.get<bool>("CSV")),
       totalParticles_(totalParticles),
+      gridFields_(gridFieldNames.size()),
       directory_(directory),
       prefix_(prefix) {
   const auto table = gatherParticles(particles, ownership.comm(), totalParticles);
@@ -145,8 +186,7 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
   grid.nodesPerElement = 2;
   for (int c = 0; c < g.cells[0]; ++c)
     grid.connectivity.push_back(c + 1), grid.connectivity.push_back(c + 2);
-  gridFile_ = std::make_unique<ExodusFile>(base + "_grid.exo", "impm grid", grid,
-                                           std::vector<std::string>{"displacementX"},
+  gridFile_ = std::make_unique<ExodusFile>(base + "_grid.exo", "impm grid", grid, gridFieldNames,
                                            std::vector<std::string>{}, globalNames);
 
   ExodusMesh points;
@@ -158,37 +198,26 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
     points.connectivity.push_back(static_cast<int>(p + 1));
     points.elementIds.push_back(static_cast<int>(p + 1));
   }
-  std::vector<std::string> elementVariables;
-  for (const auto& name : table.names)
-    if (name != "id" && name != "X" && name != "x" && name != "u")
-      elementVariables.push_back(name);
   particleFile_ = std::make_unique<ExodusFile>(base + "_particles.exo", "impm particles", points,
                                                std::vector<std::string>{"displacementX"},
-                                               elementVariables, globalNames);
+                                               exodusElementVariables<Dim>(), globalNames);
 }
 
 template <int Dim>
 void Output<Dim>::writeFields(double time, const ParticleSet<Dim>& particles,
-                              const MultiVector& gridDisplacement,
-                              const std::vector<double>& globals) {
+                              const MultiVector& gridFields, const std::vector<double>& globals) {
   const auto table = gatherParticles(particles, ownership_.comm(), totalParticles_);
   const auto nodes = rootMap(ownership_.grid().numNodes(), ownership_.comm());
-  MultiVector gridOnRoot(nodes, Dim);
-  gridOnRoot.doImport(gridDisplacement, Import(gridDisplacement.getMap(), nodes), Tpetra::INSERT);
+  MultiVector gridOnRoot(nodes, gridFields.getNumVectors());
+  gridOnRoot.doImport(gridFields, Import(gridFields.getMap(), nodes), Tpetra::INSERT);
   if (!root_)
     return;
   if (csv_)
     writeCsvTable(directory_ + "/" + prefix_ + "_particles.csv", table.names, table.columns);
   if (!exodus_)
     return;
-  gridFile_->append(time, columnsOf(gridOnRoot), {}, globals);
-  std::vector<std::vector<double>> elementValues;
-  for (std::size_t c = 0; c < table.names.size(); ++c) {
-    const auto& name = table.names[c];
-    if (name != "id" && name != "X" && name != "x" && name != "u")
-      elementValues.push_back(table.columns[c]);
-  }
-  particleFile_->append(time, {table.column("u")}, elementValues, globals);
+  gridFile_->append(time, columnsOf(gridOnRoot, gridFields_), {}, globals);
+  particleFile_->append(time, {table.column("u")}, exodusElementValues<Dim>(table), globals);
 }
 
 template <int Dim>

@@ -10,6 +10,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -41,13 +42,14 @@ class Output {
          const std::string& prefix, const NodeOwnership<Dim>& ownership,
          const ParticleSet<Dim>& particles, GlobalId totalParticles,
          const std::vector<std::string>& historyColumns,
+         const std::vector<std::string>& gridFieldNames,
          const std::vector<std::string>& globalNames);
 
   bool due(int step) const { return step % every_ == 0; }
-  // Particle and grid fields at `time`.  gridDisplacement: Dim columns on the node map.
+  // Particle and grid fields at `time`.  gridFields: the named columns on the node map.
   // Collective.
-  void writeFields(double time, const ParticleSet<Dim>& particles,
-                   const MultiVector& gridDisplacement, const std::vector<double>& globals);
+  void writeFields(double time, const ParticleSet<Dim>& particles, const MultiVector& gridFields,
+                   const std::vector<double>& globals);
   void appendHistory(const std::vector<double>& row) const;
   // Paths of the files written, for the user.
   std::vector<std::string> files() const;
@@ -58,6 +60,7 @@ class Output {
   int every_;
   bool exodus_, csv_;
   GlobalId totalParticles_;
+  std::size_t gridFields_;
   std::string directory_, prefix_;
   std::unique_ptr<ExodusFile> gridFile_, particleFile_;
   std::unique_ptr<CsvHistory> history_;

@@ -9,12 +9,17 @@
 #include <sstream>
 
 #include "app/BoundaryConditions.hpp"
+#include "app/GridFields.hpp"
+#include "app/History.hpp"
+#include "app/TimeIntegration.hpp"
+#include "assembly/Energy.hpp"
 #include "bc/RobinEnd.hpp"
 #include "core/Collective.hpp"
 #include "core/Errors.hpp"
 #include "core/Timers.hpp"
 #include "io/InputDeck.hpp"
 #include "material/MaterialFactory.hpp"
+#include "solver/DynamicStepper.hpp"
 #include "solver/GridSystem.hpp"
 #include "solver/QuasiStaticStepper.hpp"
 
@@ -65,6 +70,7 @@ Simulation<Dim>::Simulation(const Teuchos::ParameterList& deck, const std::strin
     : comm_(comm), deck_(deck), deckFile_(deckFile), outputDirectory_(outputDirectory) {
   // Local checks first, agreed on by every rank; then the collective set-up.
   collectively(*comm_, [&] { setUp(deck_); });
+  collectively(*comm_, [&] { checkExplicitTimeStep(); });
   collectively(*comm_, [&] {
     newton_ = std::make_unique<NewtonSolver>(deck_.sublist("Solver"), comm_);
     newton_->setLog(deck_.sublist("Solver").get<bool>("Print Iterations") ? &std::cout : nullptr,
@@ -104,8 +110,8 @@ void Simulation<Dim>::setUp(const Teuchos::ParameterList& deck) {
         createMaterial<Dim>(materials.name(it), materials.sublist(materials.name(it))));
   }
   bodies_ = std::make_unique<Bodies<Dim>>(deck, materialNames_, grid);
-  particles_ =
-      bodies_->createParticles(method_, ownership_->decomposition(), comm_->getRank(), materials_);
+  particles_ = bodies_->createParticles(method_, ownership_->decomposition(), comm_->getRank(),
+                                        materials_, kinematics_ == Kinematics::updatedLagrangian);
   for (std::size_t m = 0; m < materials_.size(); ++m)
     materials_[m]->initialize(particles_, static_cast<int>(m));
   conditions_ = createBoundaryConditions<Dim>(deck, *bodies_, kinematics_);
@@ -122,87 +128,140 @@ void Simulation<Dim>::setUp(const Teuchos::ParameterList& deck) {
 }
 
 template <int Dim>
+void Simulation<Dim>::checkExplicitTimeStep() const {
+  const auto& ti = deck_.sublist("Time Integration");
+  if (ti.get<std::string>("Type") != "explicit")
+    return;
+  const double limit =
+      DynamicStepper<Dim>::stableTimeStep(ownership_->grid(), particles_, materials_, *comm_);
+  const double dt = ti.get<double>("Time Step");
+  std::ostringstream why;
+  why << "Time Step = " << dt << " exceeds the explicit stability limit h/c = " << limit
+      << " (h the cell size, c the largest wave speed sqrt(E/rho))";
+  if (dt > limit && !ti.get<bool>("Allow Unstable Time Step"))
+    throw InputError("Time Integration/Time Step",
+                     why.str() + "; reduce it, or set Allow Unstable Time Step to run anyway");
+  if (comm_->getRank() != 0)
+    return;
+  if (dt > limit)
+    std::cout << "impm: warning: " << why.str() << "; running as asked\n";
+  if (ti.get<std::string>("Position Update") == "primer")
+    std::cout << "impm: warning: the primer's position update (eq. 1.53 as printed) is "
+                 "unconditionally unstable: errors grow by sqrt(1 + (w dt)^2 / 2) per step\n";
+}
+
+template <int Dim>
 std::vector<double> Simulation<Dim>::reactions() const {
   const double none = std::numeric_limits<double>::quiet_NaN();
   return {left_ ? left_->force() : none, right_ ? right_->force() : none};
 }
 
 template <int Dim>
-std::vector<std::string> Simulation<Dim>::run() {
-  const bool root = comm_->getRank() == 0;
+void Simulation<Dim>::printHeader() const {
+  if (comm_->getRank() != 0)
+    return;
   const auto& grid = ownership_->grid();
-  if (root)
-    std::cout << "impm: " << deckFile_ << ": " << Dim << "-D, " << methodName(method_) << ", "
-              << (kinematics_ == Kinematics::totalLagrangian ? "total" : "updated")
-              << " Lagrangian, " << totalParticles_ << " integration points, " << grid.cells[0]
-              << " cells, " << comm_->getSize() << " rank" << (comm_->getSize() > 1 ? "s" : "")
-              << "\n";
+  const auto& ti = deck_.sublist("Time Integration");
+  std::cout << "impm: " << deckFile_ << ": " << Dim << "-D, " << methodName(method_) << ", "
+            << (kinematics_ == Kinematics::totalLagrangian ? "total" : "updated") << " Lagrangian, "
+            << ti.get<std::string>("Type") << ", " << totalParticles_ << " integration points, "
+            << grid.cells[0] << " cells, " << comm_->getSize() << " rank"
+            << (comm_->getSize() > 1 ? "s" : "") << "\n";
+}
 
+template <int Dim>
+void Simulation<Dim>::printProgress(const StepRecord& r, const std::vector<double>& F) const {
+  if (comm_->getRank() != 0)
+    return;
+  const auto& ti = deck_.sublist("Time Integration");
+  std::cout << "  step " << r.step;
+  if (isStatic(ti)) {
+    std::cout << "/" << ti.get<int>("Load Steps") << "  load " << std::fixed << std::setprecision(3)
+              << r.loadFactor << std::defaultfloat;
+  } else {
+    std::cout << "  t " << std::setprecision(6) << r.time << "  dt " << r.dt << "  energy "
+              << std::setprecision(8) << r.kineticEnergy + r.strainEnergy;
+  }
+  const double residual = r.newton.residualNorms.empty() ? 0.0 : r.newton.residualNorms.back();
+  std::cout << "  newton " << r.newton.iterations() << "  linear "
+            << r.newton.totalLinearIterations() << "  |R| " << std::scientific
+            << std::setprecision(2) << residual << std::defaultfloat;
+  if (left_)
+    std::cout << "  F0 " << format(F[0]);
+  if (right_)
+    std::cout << "  FL " << format(F[1]);
+  std::cout << "\n";
+}
+
+template <int Dim>
+std::vector<std::string> Simulation<Dim>::run() {
+  printHeader();
+  const auto& timeIntegration = deck_.sublist("Time Integration");
+  const bool dynamic = !isStatic(timeIntegration);
+  History<Dim> history(bodies_->columnNames());
+  GridFields<Dim> grid(*ownership_, !dynamic || kinematics_ == Kinematics::totalLagrangian,
+                       dynamic);
   std::unique_ptr<Output<Dim>> output;
   collectively(*comm_, [&] {
     output = std::make_unique<Output<Dim>>(
         deck_.sublist("Output"), outputDirectory_, prefix_, *ownership_, particles_,
-        totalParticles_,
-        std::vector<std::string>{"step", "time", "load_factor", "F0", "FL", "newton_iterations",
-                                 "linear_iterations", "residual", "attempts"},
-        std::vector<std::string>{"F0", "FL"});
+        totalParticles_, history.columns(), grid.names(), std::vector<std::string>{"F0", "FL"});
   });
-  MultiVector gridDisplacement(ownership_->nodeMap(), Dim);
-  collectively(*comm_,
-               [&] { output->writeFields(0.0, particles_, gridDisplacement, reactions()); });
+  StepRecord initial;
+  initial.kineticEnergy = kineticEnergy<Dim>(particles_, *comm_);
+  initial.strainEnergy = strainEnergy<Dim>(particles_, materials_, *comm_);
+  initial.loadFactor = dynamic ? 1.0 : 0.0;
+  const auto F0 = reactions();
+  output->appendHistory(history.row(initial, F0[0], F0[1], particles_, *comm_));
+  collectively(*comm_, [&] { output->writeFields(0.0, particles_, grid.values(), F0); });
 
-  StepperContext<Dim> context{
-      *ownership_, method_,
-      kinematics_, particles_,
-      materials_,  conditions_,
-      *newton_,    [this](double t) { bodies_->applyLoads(particles_, t); }};
-  const auto& timeIntegration = deck_.sublist("Time Integration");
-  QuasiStaticStepper<Dim> stepper(timeIntegration, context);
-  const int steps = timeIntegration.get<int>("Load Steps");
   double finalTime = 0.0;
-  stepper.run([&](const StepRecord& r, const GridSystem<Dim>& system, const Vector& du) {
-    // Accumulate the grid displacement for output (active nodes only).
-    auto values = du.getData();
-    const auto& map = *du.getMap();
-    for (decltype(values.size()) k = 0; k < values.size(); ++k) {
-      const GO dof = map.getGlobalElement(static_cast<LO>(k));
-      if (system.dofs().isExtraDof(dof))
-        continue;
-      gridDisplacement.sumIntoGlobalValue(dof / Dim, dof % Dim, values[k]);
-    }
+  const StepCallback<Dim> onStep = [&](const StepRecord& r, const StepGrid<Dim>& step) {
+    grid.update(step);
     const auto F = reactions();
-    output->appendHistory({double(r.step), r.time, r.loadFactor, F[0], F[1],
-                           double(r.newton.iterations()), double(r.newton.totalLinearIterations()),
-                           r.newton.residualNorms.back(), double(r.attempts)});
-    if (root)
-      std::cout << "  step " << r.step << "/" << steps << "  load " << std::fixed
-                << std::setprecision(3) << r.loadFactor << std::defaultfloat << "  newton "
-                << r.newton.iterations() << "  linear " << r.newton.totalLinearIterations()
-                << "  |R| " << std::scientific << std::setprecision(2)
-                << r.newton.residualNorms.back() << std::defaultfloat << "  F0 " << format(F[0])
-                << "  FL " << format(F[1]) << "\n";
+    output->appendHistory(history.row(r, F[0], F[1], particles_, *comm_));
+    printProgress(r, F);
     if (output->due(r.step) || r.last) {
       IMPM_TIMER("output");
-      collectively(*comm_, [&] { output->writeFields(r.time, particles_, gridDisplacement, F); });
+      collectively(*comm_, [&] { output->writeFields(r.time, particles_, grid.values(), F); });
     }
     finalTime = r.time;
-  });
+  };
+  StepperContext<Dim> context{
+      *ownership_,
+      method_,
+      kinematics_,
+      particles_,
+      materials_,
+      conditions_,
+      *newton_,
+      [this](double t) { bodies_->applyLoads(particles_, t); },
+      [this](const double* x, double* u, double* v) { bodies_->initialNodalState(x, u, v); }};
+  if (dynamic)
+    DynamicStepper<Dim>(dynamicSettings(timeIntegration), context).run(onStep);
+  else
+    QuasiStaticStepper<Dim>(timeIntegration, context).run(onStep);
+  return finish(finalTime, output->files());
+}
 
+template <int Dim>
+std::vector<std::string> Simulation<Dim>::finish(double finalTime,
+                                                 const std::vector<std::string>& files) const {
   const auto F = reactions();
   const auto result = verification_->check<Dim>(particles_, comm_, finalTime, F[0], F[1]);
-  if (root) {
+  if (comm_->getRank() == 0) {
     for (const auto& line : result.report)
       std::cout << "  verification: " << line << "\n";
     const std::string path = outputDirectory_ + "/" + prefix_ + "_verification.csv";
     writeCsvTable(path, {"cells", "points", "rms_error", "max_error", "F0", "FL"},
-                  {{double(grid.cells[0])},
+                  {{double(ownership_->grid().cells[0])},
                    {double(totalParticles_)},
                    {result.hasExact ? result.rmsError : std::nan("")},
                    {result.hasExact ? result.maxError : std::nan("")},
                    {F[0]},
                    {F[1]}});
     std::cout << "impm: wrote";
-    for (const auto& f : output->files())
+    for (const auto& f : files)
       std::cout << " " << f;
     std::cout << " " << path << "\n";
   }

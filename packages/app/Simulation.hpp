@@ -15,6 +15,7 @@
 #include "assembly/Kinematics.hpp"
 #include "solver/Contribution.hpp"
 #include "solver/NewtonSolver.hpp"
+#include "solver/StepperContext.hpp"
 
 namespace impm {
 
@@ -36,7 +37,11 @@ class Simulation {
 
  private:
   void setUp(const Teuchos::ParameterList& deck);
+  void checkExplicitTimeStep() const;
   std::vector<double> reactions() const;
+  void printHeader() const;
+  void printProgress(const StepRecord& record, const std::vector<double>& F) const;
+  std::vector<std::string> finish(double finalTime, const std::vector<std::string>& files) const;
 
   Teuchos::RCP<const Comm> comm_;
   Teuchos::ParameterList deck_;

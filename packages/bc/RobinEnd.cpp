@@ -40,7 +40,8 @@ RobinEnd::RobinEnd(const std::string& name, const Teuchos::ParameterList& params
 void RobinEnd::prepare(const NodeOwnership<1>& ownership, std::vector<ExtraDof>& extras,
                        std::vector<GlobalId>& touched) {
   const auto& grid = ownership.grid();
-  if (!grid.inside(0, position_))
+  const double g = grid.gridCoord(0, position_);  // round-off may put a fixed end at -1e-17
+  if (!(g >= -kGridTolerance && g <= grid.cells[0] + kGridTolerance))
     throw NumericalError("the " + std::string(left_ ? "left" : "right") + " end of body '" + body_ +
                          "' (boundary condition '" + name_ +
                          "') at x = " + std::to_string(position_) + " has left the grid");
@@ -124,6 +125,7 @@ void RobinEnd::commit(const StepContext<1>& ctx, const HostValues& x) {
           support_.weight[k] * x(overlap.getLocalElement(ctx.dofs.nodeDof(support_.node[k], 0)), 0);
   }
   Teuchos::reduceAll(*ctx.dofs.ownedMap()->getComm(), Teuchos::REDUCE_SUM, 2, local, global);
+  work_ += 0.5 * (force_ + global[0]) * global[1];
   force_ = global[0];
   displacement_ += global[1];
   if (kinematics_ == Kinematics::updatedLagrangian)

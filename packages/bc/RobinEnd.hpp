@@ -37,6 +37,8 @@ class RobinEnd : public Contribution<1> {
                    const HostValuesMutable& f) const override;
   void addJacobian(const StepContext<1>& ctx, const HostValues& x, FECrsMatrix& J) const override;
   void commit(const StepContext<1>& ctx, const HostValues& x) override;
+  // F du_end summed over the steps (trapezoidal in F).
+  double work() const override { return work_; }
 
   const std::string& name() const { return name_; }
   const std::string& body() const { return body_; }
@@ -58,7 +60,7 @@ class RobinEnd : public Contribution<1> {
   double alpha_, beta_;
   Formula gamma_;
   Kinematics kinematics_;
-  double position_, displacement_ = 0.0, force_ = 0.0;
+  double position_, displacement_ = 0.0, force_ = 0.0, work_ = 0.0;
   Support support_;  // nodes with N_i(x_end) != 0, valid during a step
   bool owner_ = false;
 };

@@ -37,6 +37,20 @@ void LinearElastic1D::firstPiola(const Particles& particles, const Tensors& F, i
       });
 }
 
+void LinearElastic1D::energyDensity(const Particles& particles, const Tensors& F, int index,
+                                    Particles::Scalars& W) const {
+  auto material = particles.material;
+  auto props = particles.props;
+  Kokkos::parallel_for(
+      "impm::LinearElastic1D::energy", RangePolicy<DefaultExecSpace>(0, particles.size()),
+      KOKKOS_LAMBDA(const int p) {
+        if (material(p) != index)
+          return;
+        const double e = F(p, 0, 0) - 1.0;
+        W(p) = 0.5 * props(p, 0) * e * e;
+      });
+}
+
 double LinearElastic1D::maxModulus(const Particles& particles, int index) const {
   return maxProperty(particles, index, 0);
 }

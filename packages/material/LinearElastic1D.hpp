@@ -19,7 +19,10 @@ class LinearElastic1D : public Material<1> {
   void initialize(Particles& particles, int index) const override;
   void firstPiola(const Particles& particles, const Tensors& F, int index, Tensors& P,
                   Tangents& A) const override;
+  void energyDensity(const Particles& particles, const Tensors& F, int index,
+                     Particles::Scalars& W) const override;
   double maxModulus(const Particles& particles, int index) const override;
+  bool isLinear() const override { return true; }
 
  private:
   Formula modulus_;

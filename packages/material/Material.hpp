@@ -35,6 +35,14 @@ class Material {
   virtual void firstPiola(const Particles& particles, const Tensors& F, int index, Tensors& P,
                           Tangents& A) const = 0;
 
+  // Strain energy per unit reference volume W(F) for the particles of this material (for
+  // the energy history; 1-D: per unit reference length and section).
+  virtual void energyDensity(const Particles& particles, const Tensors& F, int index,
+                             typename Particles::Scalars& W) const = 0;
+
+  // True when P is affine in F (then a total-Lagrangian, or 1-D, step is a linear system).
+  virtual bool isLinear() const { return false; }
+
   // Largest small-strain modulus over this material's particles (for wave speeds).
   virtual double maxModulus(const Particles& particles, int index) const = 0;
 

@@ -53,6 +53,8 @@ class Contribution {
                            FECrsMatrix& /*J*/) const {}
   // The step converged with solution x (overlap-local).  Collective.
   virtual void commit(const StepContext<Dim>& /*ctx*/, const HostValues& /*x*/) {}
+  // Work done on the bodies so far (for the energy balance); the same on every rank.
+  virtual double work() const { return 0.0; }
 };
 
 }  // namespace impm

@@ -76,6 +76,13 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
   }
   entryCols_ = impm::entryDofs(map_, *graph_->getColMap());
   importer_ = Teuchos::rcp(new Import(dofs_.ownedMap(), dofs_.overlapMap()));
+  nodalMask_ = Teuchos::rcp(new Vector(dofs_.ownedMap()));
+  {
+    auto mask = nodalMask_->getLocalViewHost(Tpetra::Access::OverwriteAll);
+    const auto& owned = *dofs_.ownedMap();
+    for (std::size_t k = 0; k < owned.getNodeNumElements(); ++k)
+      mask(k, 0) = dofs_.isExtraDof(owned.getGlobalElement(static_cast<LO>(k))) ? 0.0 : 1.0;
+  }
   const std::size_t n = particles.size();
   F_ = typename ParticleSet<Dim>::Tensors("trial F", n);
   P_ = typename ParticleSet<Dim>::Tensors("P", n);
@@ -162,14 +169,25 @@ template <int Dim>
 void GridSystem<Dim>::trialState(const Vector& x, typename ParticleSet<Dim>::Tensors& F,
                                  typename ParticleSet<Dim>::Tensors& P) {
   updateStress(x);
+  frozenReady_ = false;
   Kokkos::deep_copy(F, F_);
   Kokkos::deep_copy(P, P_);
 }
 
 template <int Dim>
 void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jacobian) {
-  updateStress(x);
+  if (!frozen_) {
+    updateStress(x);
+  } else if (!frozenReady_) {
+    updateStress(Vector(map()));  // the stress at the start of the step, du = 0
+    frozenReady_ = true;
+  }
   auto xo = toOverlap(x);
+  Teuchos::RCP<Vector> acceleration;
+  if (inertia_.c0 != 0.0) {
+    acceleration = Teuchos::rcp(new Vector(dofs_.overlapMap()));
+    acceleration->update(inertia_.c0, *xo, -1.0, *inertiaOverlap_, 0.0);
+  }
   auto xHost = xo->getLocalViewHost(Tpetra::Access::ReadOnly);
   if (residual) {
     IMPM_TIMER("residual");
@@ -179,6 +197,9 @@ void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jac
       auto local = f.getLocalViewDevice(Tpetra::Access::ReadWrite);
       addInternalForce<Dim>(map_, entryDofs_, particles_, Pn_, local);
       addExternalForce<Dim>(map_, entryDofs_, particles_.force, loadFactor_, local);
+      if (acceleration)
+        addInertiaForce<Dim>(inertia_.mass, map_, entryDofs_, particles_.mass,
+                             acceleration->getLocalViewDevice(Tpetra::Access::ReadOnly), local);
     }
     {
       auto local = f.getLocalViewHost(Tpetra::Access::ReadWrite);
@@ -194,11 +215,74 @@ void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jac
     auto& J = dynamic_cast<FECrsMatrix&>(*jacobian);
     J.beginAssembly();
     J.setAllToScalar(0.0);
-    addTangent<Dim>(map_, entryDofs_, entryCols_, particles_, An_, J.getLocalMatrixDevice());
+    if (!frozen_)
+      addTangent<Dim>(map_, entryDofs_, entryCols_, particles_, An_, J.getLocalMatrixDevice());
+    if (acceleration)
+      addMassMatrix<Dim>(inertia_.mass, inertia_.c0, map_, entryDofs_, entryCols_, particles_.mass,
+                         J.getLocalMatrixDevice());
     for (std::size_t c = 0; c < contributions_.size(); ++c)
       contributions_[c]->addJacobian(context(static_cast<int>(c)), constHost(xHost), J);
     J.endAssembly();
   }
+}
+
+template <int Dim>
+bool GridSystem<Dim>::isLinear() const {
+  if (frozen_)
+    return true;
+  for (const auto& m : materials_)
+    if (!m->isLinear())
+      return false;
+  return Dim == 1 || kinematics_ == Kinematics::totalLagrangian;
+}
+
+template <int Dim>
+void GridSystem<Dim>::setInertia(const Inertia& inertia) {
+  inertia_ = inertia;
+  inertiaOverlap_ = toOverlap(*inertia.r);
+}
+
+template <int Dim>
+Teuchos::RCP<Vector> GridSystem<Dim>::particleToGrid(
+    const typename ParticleSet<Dim>::Vectors& q) const {
+  FEMultiVector f(dofs_.ownedMap(), importer_, 1);
+  f.beginAssembly();
+  impm::particleToGrid<Dim>(map_, entryDofs_, particles_.mass, q,
+                            f.getLocalViewDevice(Tpetra::Access::ReadWrite));
+  f.endAssembly();
+  auto result = Teuchos::rcp(new Vector(dofs_.ownedMap()));
+  Tpetra::deep_copy(*result, *f.getVector(0));
+  return result;
+}
+
+template <int Dim>
+Teuchos::RCP<Vector> GridSystem<Dim>::lumpedMass() const {
+  FEMultiVector m(dofs_.ownedMap(), importer_, 1);
+  m.beginAssembly();
+  addLumpedMass<Dim>(map_, entryDofs_, particles_.mass,
+                     m.getLocalViewDevice(Tpetra::Access::ReadWrite));
+  m.endAssembly();
+  auto result = Teuchos::rcp(new Vector(dofs_.ownedMap()));
+  Tpetra::deep_copy(*result, *m.getVector(0));
+  return result;
+}
+
+template <int Dim>
+Teuchos::RCP<CrsMatrix> GridSystem<Dim>::massMatrix(MassType type) const {
+  auto M = Teuchos::rcp(new FECrsMatrix(graph_));
+  M->beginAssembly();
+  M->setAllToScalar(0.0);
+  addMassMatrix<Dim>(type, 1.0, map_, entryDofs_, entryCols_, particles_.mass,
+                     M->getLocalMatrixDevice());
+  const auto& owned = *dofs_.ownedMap();
+  const double one = 1.0;
+  for (std::size_t k = 0; k < owned.getNodeNumElements(); ++k) {
+    const GO gid = owned.getGlobalElement(static_cast<LO>(k));
+    if (dofs_.isExtraDof(gid))
+      M->sumIntoGlobalValues(gid, 1, &one, &gid);
+  }
+  M->endAssembly();
+  return M;
 }
 
 template <int Dim>

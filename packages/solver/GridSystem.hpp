@@ -1,15 +1,18 @@
 #pragma once
-// The nonlinear system of one step on the grid (primer eq. 1.62: f_int + f_ext = 0, with
-// the boundary forces of eq. 1.18-1.19 as extra unknowns):
-//   R(du) = f_int(du) - load * f_ext - boundary forces + contributions = 0,
-// where du are the grid displacement increments of the step.  Built at the start of a step
-// from the particle-grid map; the integration points' state at the start of the step is
+// The nonlinear system of one step on the grid (primer eq. 1.62: f_int + f_ext = 0; with
+// inertia eq. 1.44, 1.70: f_int + f_ext = M a; the boundary forces of eq. 1.18-1.19 are
+// extra unknowns):
+//   R(du) = f_int(du) - load * f_ext - boundary forces + M a(du) + contributions = 0,
+// where du are the grid displacement increments of the step and, in dynamic steps,
+// a(du) = c0 du - r is the time integrator's acceleration (Newmark, explicit).  Built at the start
+// of a step from the particle-grid map; the integration points' state at the start of the step is
 // read, never written, until the stepper accepts the solution.
 
 #include <memory>
 #include <vector>
 
 #include "assembly/Kinematics.hpp"
+#include "assembly/Mass.hpp"
 #include "basis/Method.hpp"
 #include "material/Material.hpp"
 #include "solver/Contribution.hpp"
@@ -28,7 +31,33 @@ class GridSystem : public ResidualModel {
              const ParticleSet<Dim>& particles, const Materials& materials,
              const Contributions& contributions, double time, double loadFactor);
 
+  // The inertia term M a of a dynamic step, a = c0 du - r on the nodal unknowns.
+  struct Inertia {
+    MassType mass = MassType::lumped;
+    double c0 = 0.0;
+    Teuchos::RCP<const Vector> r;  // on map()
+  };
+  void setInertia(const Inertia& inertia);
+  // Explicit steps: the internal force is that of the start of the step whatever du is,
+  // and contributes nothing to the Jacobian.
+  void freezeInternalForce(bool frozen) { frozen_ = frozen, frozenReady_ = false; }
+  // The time at the end of the step and the load factor (a system built at reference
+  // positions serves every step of a total-Lagrangian run).
+  void setTime(double time, double loadFactor) { time_ = time, loadFactor_ = loadFactor; }
+
+  // Particle to grid on map(): sum_p m_p phi_ip q_p (momentum for q = v).
+  Teuchos::RCP<Vector> particleToGrid(const typename ParticleSet<Dim>::Vectors& q) const;
+  // The lumped mass m_i = sum_p m_p phi_ip on map() (0 on extra unknowns).
+  Teuchos::RCP<Vector> lumpedMass() const;
+  // The mass matrix, with 1 on the diagonal of the extra unknowns so that it can be solved.
+  Teuchos::RCP<CrsMatrix> massMatrix(MassType type) const;
+  // 1 on nodal unknowns, 0 on extra unknowns.
+  const Vector& nodalMask() const { return *nodalMask_; }
+
   Teuchos::RCP<const Map> map() const override { return dofs_.ownedMap(); }
+  // Explicit steps, and linear materials whose step is linear in du (1-D, or total
+  // Lagrangian: no push-forward by J).  Boundary conditions and inertia are linear.
+  bool isLinear() const override;
   Teuchos::RCP<CrsMatrix> createJacobian() const override;
   void evaluate(const Vector& x, Vector* residual, CrsMatrix* jacobian) override;
 
@@ -64,6 +93,10 @@ class GridSystem : public ResidualModel {
   Kokkos::View<LO*> entryCols_;  // the same in the Jacobian's column map
   Teuchos::RCP<FECrsGraph> graph_;
   Teuchos::RCP<const Import> importer_;
+  Teuchos::RCP<Vector> nodalMask_;
+  Inertia inertia_;
+  Teuchos::RCP<Vector> inertiaOverlap_;  // r on the overlap map
+  bool frozen_ = false, frozenReady_ = false;
   // Work arrays: trial F, P and A, and P, A relative to the start of the step.
   typename ParticleSet<Dim>::Tensors F_, P_, Pn_;
   Tangents<Dim> A_, An_;

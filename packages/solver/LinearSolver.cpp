@@ -35,6 +35,18 @@ void solveOneByOne(Thyra::LinearOpWithSolveFactoryBase<double>& lows,
 
 }  // namespace
 
+void solveLinearSystem(const Thyra::LinearOpWithSolveFactoryBase<double>& lows,
+                       const Teuchos::RCP<const CrsMatrix>& A, const Vector& b, Vector& x) {
+  auto op = Thyra::createConstLinearOp<double, LO, GO, Node>(
+      Teuchos::rcp_implicit_cast<const Tpetra::Operator<double, LO, GO, Node>>(A));
+  auto solver = Thyra::linearOpWithSolve(lows, op);
+  auto tb = Thyra::createConstVector<double, LO, GO, Node>(Teuchos::rcpFromRef(b));
+  auto tx = Thyra::createVector<double, LO, GO, Node>(Teuchos::rcpFromRef(x));
+  const auto status = solver->solve(Thyra::NOTRANS, *tb, tx.ptr());
+  if (status.solveStatus == Thyra::SOLVE_STATUS_UNCONVERGED)
+    throw NumericalError("a linear solve did not converge (" + status.message + ")");
+}
+
 Teuchos::ParameterList defaultLinearSolverParameters() {
   Teuchos::ParameterList p("Linear Solver");
   p.set("Linear Solver Type", "Belos");

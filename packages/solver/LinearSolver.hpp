@@ -21,4 +21,9 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolveStrat
     const Teuchos::ParameterList& params, const Teuchos::RCP<const Comm>& comm,
     const std::string& path);
 
+// Solves A x = b with the strategy (x holds the guess on entry).  Throws NumericalError
+// when the solver does not converge.
+void solveLinearSystem(const Thyra::LinearOpWithSolveFactoryBase<double>& lows,
+                       const Teuchos::RCP<const CrsMatrix>& A, const Vector& b, Vector& x);
+
 }  // namespace impm

@@ -78,6 +78,29 @@ std::string stepNote(const NOX::Solver::Generic& solver) {
   return s.str();
 }
 
+// A linear system is solved by one Newton step whose linear solve converged.
+class LinearSystemSolved : public NOX::StatusTest::Generic {
+ public:
+  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver,
+                                          NOX::StatusTest::CheckType /*type*/) override {
+    const auto stats = solver.getSolverStatistics();
+    status_ = solver.getNumIterations() >= 1 && stepLength(solver) == 1.0 &&
+                      stats->linearSolve.lastLinearSolve_Converged
+                  ? NOX::StatusTest::Converged
+                  : NOX::StatusTest::Unconverged;
+    return status_;
+  }
+  NOX::StatusTest::StatusType getStatus() const override { return status_; }
+  std::ostream& print(std::ostream& out, int indent = 0) const override {
+    for (int k = 0; k < indent; ++k)
+      out << ' ';
+    return out << status_ << " linear system solved\n";
+  }
+
+ private:
+  NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
+};
+
 // Records ||R|| and the linear iterations of every Newton iteration.
 class IterationRecorder : public NOX::Observer {
  public:
@@ -191,6 +214,8 @@ NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vecto
     converged->addStatusTest(Teuchos::rcp(new NormF(absoluteTolerance_)));
   if (updateTolerance_ > 0)
     converged->addStatusTest(Teuchos::rcp(new RelativeUpdate(updateTolerance_)));
+  if (model->isLinear())
+    converged->addStatusTest(Teuchos::rcp(new LinearSystemSolved));
   auto tests = Teuchos::rcp(new Combo(Combo::OR));
   tests->addStatusTest(Teuchos::rcp(new FiniteValue));
   tests->addStatusTest(converged);

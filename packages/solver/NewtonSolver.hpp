@@ -36,6 +36,11 @@ class NewtonSolver {
   // Solves R(x) = 0 from the guess in x; x holds the last iterate on return.  Collective.
   NewtonReport solve(const Teuchos::RCP<ResidualModel>& model, Vector& x) const;
 
+  // The Stratimikos strategy, for the other linear solves of a step (mass projections).
+  const Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>>& linearSolveStrategy() const {
+    return lows_;
+  }
+
   // Where per-iteration lines go (rank 0 only); null: nowhere.
   void setLog(std::ostream* log, const std::string& indent) {
     log_ = log;

@@ -4,9 +4,10 @@
 #include <iostream>
 #include <sstream>
 
-#include "assembly/ParticleUpdate.hpp"
+#include "assembly/Energy.hpp"
 #include "core/Errors.hpp"
 #include "core/Timers.hpp"
+#include "solver/ParticleAdvance.hpp"
 
 namespace impm {
 
@@ -20,7 +21,7 @@ QuasiStaticStepper<Dim>::QuasiStaticStepper(const Teuchos::ParameterList& params
       log_(ctx_.ownership.comm()->getRank() == 0 ? &std::cout : nullptr) {}
 
 template <int Dim>
-void QuasiStaticStepper<Dim>::run(const StepCallback& onStep) {
+void QuasiStaticStepper<Dim>::run(const StepCallback<Dim>& onStep) {
   const double nominal = 1.0 / steps_;
   double loadFactor = 0.0, increment = nominal;
   int step = 0, attempts = 0;
@@ -55,16 +56,11 @@ void QuasiStaticStepper<Dim>::run(const StepCallback& onStep) {
       continue;
     }
     system->commit(*du);
-    {
-      IMPM_TIMER("particle update");
-      typename ParticleSet<Dim>::Tensors F("F", ctx_.particles.size()),
-          P("P", ctx_.particles.size());
-      system->trialState(*du, F, P);
-      auto duOverlap = system->toOverlap(*du);
-      updateParticles<Dim>(ctx_.kinematics, system->particleGridMap(), system->entryDofs(),
-                           duOverlap->getLocalViewDevice(Tpetra::Access::ReadOnly), F, P,
-                           ctx_.particles);
-    }
+    typename ParticleSet<Dim>::Vectors uBefore("u before", ctx_.particles.size());
+    Kokkos::deep_copy(uBefore, ctx_.particles.u);
+    advanceParticles(*system, *du, ctx_.kinematics, ctx_.particles);
+    const Comm& comm = *ctx_.ownership.comm();
+    bodyWork_ += bodyForceWork<Dim>(ctx_.particles, uBefore, 0.5 * (loadFactor + target), comm);
     loadFactor = target;
     StepRecord record;
     record.step = ++step;
@@ -73,8 +69,10 @@ void QuasiStaticStepper<Dim>::run(const StepCallback& onStep) {
     record.attempts = attempts;
     record.last = loadFactor >= 1.0 - 1e-12;
     record.newton = report;
+    record.strainEnergy = strainEnergy<Dim>(ctx_.particles, ctx_.materials, comm);
+    record.externalWork = bodyWork_ + contributionWork<Dim>(ctx_.contributions);
     attempts = 0;
-    onStep(record, *system, *du);
+    onStep(record, StepGrid<Dim>{*system, *du, nullptr, nullptr});
     increment = std::min(2 * increment, nominal);  // grow back after a cutback
   }
 }

@@ -15,19 +15,17 @@ namespace impm {
 template <int Dim>
 class QuasiStaticStepper {
  public:
-  using StepCallback =
-      std::function<void(const StepRecord&, const GridSystem<Dim>&, const Vector&)>;
-
   QuasiStaticStepper(const Teuchos::ParameterList& timeIntegration, StepperContext<Dim> context);
 
   // Runs every load step; calls onStep after each accepted one.  Throws NumericalError when
   // an increment fails at the smallest size.
-  void run(const StepCallback& onStep);
+  void run(const StepCallback<Dim>& onStep);
 
  private:
   StepperContext<Dim> ctx_;
   int steps_;
   double minIncrement_, time_;
+  double bodyWork_ = 0.0;
   std::ostream* log_;
 };
 

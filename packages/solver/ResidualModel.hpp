@@ -15,6 +15,8 @@ class ResidualModel {
   virtual Teuchos::RCP<CrsMatrix> createJacobian() const = 0;
   // Fills the residual and/or the Jacobian at x; either pointer may be null.  Collective.
   virtual void evaluate(const Vector& x, Vector* residual, CrsMatrix* jacobian) = 0;
+  // True when R is affine in x: one Newton step with a converged linear solve solves it.
+  virtual bool isLinear() const { return false; }
 };
 
 }  // namespace impm

@@ -1,7 +1,7 @@
 #pragma once
-// Everything a time stepper works on: the grid and its ownership, the discretisation, the
-// particles with their materials, the extra terms, the Newton solver, and how to set the
-// particles' external forces at a given time.
+// Everything a time stepper works on (the grid and its ownership, the discretisation, the
+// particles with their materials, the extra terms, the Newton solver, the loads), and what
+// it reports after every accepted step.
 
 #include <functional>
 #include <memory>
@@ -9,7 +9,7 @@
 
 #include "assembly/Kinematics.hpp"
 #include "basis/Method.hpp"
-#include "solver/Contribution.hpp"
+#include "solver/GridSystem.hpp"
 #include "solver/NewtonSolver.hpp"
 
 namespace impm {
@@ -25,16 +25,41 @@ struct StepperContext {
   const NewtonSolver& newton;
   // Sets particles.force (the full external force at `time`).
   std::function<void(double time)> applyLoads;
+  // Total-Lagrangian dynamics keeps nodal values (FEM): their initial displacement and
+  // velocity at node position x (the deck's fields interpolated at the nodes).
+  std::function<void(const double* x, double* u, double* v)> initialNodalState;
 };
 
-// What a stepper reports after every accepted step.
 struct StepRecord {
   int step = 0;
   double time = 0.0;
+  double dt = 0.0;
   double loadFactor = 1.0;
   int attempts = 1;   // 1 + number of cutbacks before this step was accepted
   bool last = false;  // the run ends with this step
   NewtonReport newton;
+  double kineticEnergy = 0.0, strainEnergy = 0.0, externalWork = 0.0;
 };
+
+// The grid solution of an accepted step, for output (vectors on system.map()).
+template <int Dim>
+struct StepGrid {
+  const GridSystem<Dim>& system;
+  const Vector& du;
+  const Vector* velocity;  // null in static steps
+  const Vector* mass;      // lumped nodal mass; null in static steps
+};
+
+template <int Dim>
+using StepCallback = std::function<void(const StepRecord&, const StepGrid<Dim>&)>;
+
+// The work of the contributions (boundary forces) so far.
+template <int Dim>
+double contributionWork(const std::vector<std::shared_ptr<Contribution<Dim>>>& contributions) {
+  double work = 0.0;
+  for (const auto& c : contributions)
+    work += c->work();
+  return work;
+}
 
 }  // namespace impm

@@ -46,24 +46,38 @@ def stem(deck):
 def convergence(args):
     errors, table = [], []
     failures = []
+    if not args.rate and args.exact is None:
+        sys.exit("convergence needs --rate or --exact")
     for n in args.cells:
         out = tempfile.mkdtemp(prefix="impm-conv-", dir=".")
         sets = ["Grid/Cells={%d}" % n, "Discretization/Method=" + args.method,
                 "Verification/Maximum RMS Error=0", "Verification/Reaction Tolerance=0",
                 "Solver/Print Iterations=false"] + args.set
+        if args.time_step:  # proportional to the cell size
+            sets.append("Time Integration/Time Step=%r" % (args.time_step * args.cells[0] / n))
         r = run_impm(args, args.deck, out, sets, args.np)
         if r.returncode != 0:
             print(r.stdout, r.stderr)
             sys.exit("impm failed at %d cells" % n)
         row = read_csv(os.path.join(out, stem(args.deck) + "_verification.csv"))[0]
+        energy = [float(r["total_energy"]) for r in
+                  read_csv(os.path.join(out, stem(args.deck) + "_history.csv"))]
+        change = max(abs(e - energy[0]) for e in energy) / energy[0] if energy[0] else 0.0
         shutil.rmtree(out)
+        if args.energy_drift is not None and change > args.energy_drift:
+            failures.append("total energy changes by %.2e at %d cells (allowed %g)"
+                            % (change, n, args.energy_drift))
+        if args.energy_loss is not None and energy[-1] > (1 - args.energy_loss) * energy[0]:
+            failures.append("total energy lost only %.2e at %d cells (expected at least %g)"
+                            % (1 - energy[-1] / energy[0], n, args.energy_loss))
         e = float(row["rms_error"])
         errors.append(e)
-        table.append((n, int(row["points"]), e, float(row["F0"]), float(row["FL"])))
-    print("%-6s %-7s %-12s %-6s %-20s %-20s" % ("cells", "points", "rms_error", "rate", "F0", "FL"))
-    for k, (n, pts, e, f0, fl) in enumerate(table):
+        table.append((n, int(row["points"]), e, float(row["F0"]), float(row["FL"]), change))
+    print("%-6s %-7s %-12s %-6s %-20s %-20s %-10s" % ("cells", "points", "rms_error", "rate", "F0",
+                                                     "FL", "energy"))
+    for k, (n, pts, e, f0, fl, change) in enumerate(table):
         rate = math.log(errors[k - 1] / e) / math.log(2) if k else float("nan")
-        print("%-6d %-7d %-12.4e %-6.3f %-20.15g %-20.15g" % (n, pts, e, rate, f0, fl))
+        print("%-6d %-7d %-12.4e %-6.3f %-20.15g %-20.15g %-10.2e" % (n, pts, e, rate, f0, fl, change))
         if args.exact is not None:
             if e > args.exact:
                 failures.append("RMS error %.4e at %d cells: not exact to %g" % (e, n, args.exact))
@@ -182,6 +196,12 @@ def main():
     c.add_argument("--reactions", type=float, nargs=4, metavar=("F0", "FL", "TOL", "ORDER"),
                    help="exact F0 and FL, the allowed error at the coarsest grid, and the "
                         "order at which that bound shrinks (0: fixed)")
+    c.add_argument("--time-step", type=float,
+                   help="Time Step at the first size, scaled with the cell size")
+    c.add_argument("--energy-drift", type=float,
+                   help="largest relative change of the total energy at any size")
+    c.add_argument("--energy-loss", type=float,
+                   help="the run must lose at least this fraction of its energy (non-conserving)")
     c.add_argument("--np", type=int, default=1)
     c.add_argument("--set", action="append", default=[])
 

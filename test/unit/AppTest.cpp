@@ -57,13 +57,14 @@ TEST(Bodies, MaterialPointsAndGaussPointsFillTheBody) {
   std::vector<std::shared_ptr<Material<1>>> mats = {
       createMaterial<1>("steel", deck.sublist("Materials").sublist("steel"))};
   // Material points: round(3 * 1 / 0.1625) = 18 equal particles.
-  const auto mp = totals(
-      bodies.createParticles(Method::gimp, own.decomposition(), comm->getRank(), mats), *comm);
+  const auto mp =
+      totals(bodies.createParticles(Method::gimp, own.decomposition(), comm->getRank(), mats, true),
+             *comm);
   EXPECT_EQ(mp.count, 18);
   EXPECT_NEAR(mp.volume, 1.0, 1e-14);
   // Gauss points: 2 per cell on the part of each cell inside the bar (7 cells, the 7th cut).
   const auto gp = totals(
-      bodies.createParticles(Method::fem, own.decomposition(), comm->getRank(), mats), *comm);
+      bodies.createParticles(Method::fem, own.decomposition(), comm->getRank(), mats, true), *comm);
   EXPECT_EQ(gp.count, 14);
   EXPECT_NEAR(gp.volume, 1.0, 1e-14);
   // Mass = density * integral of the section 1 + x: Gauss points are exact for it.
@@ -88,7 +89,8 @@ TEST(Output, ParticlesAreGatheredSortedById) {
   Bodies<1> bodies(deck, {"steel"}, own.grid());
   std::vector<std::shared_ptr<Material<1>>> mats = {
       createMaterial<1>("steel", deck.sublist("Materials").sublist("steel"))};
-  const auto ps = bodies.createParticles(Method::cpdi, own.decomposition(), comm->getRank(), mats);
+  const auto ps =
+      bodies.createParticles(Method::cpdi, own.decomposition(), comm->getRank(), mats, true);
   const auto table = gatherParticles(ps, comm, 20);
   if (comm->getRank() != 0)
     return;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "assembly/Forces.hpp"
+#include "assembly/Mass.hpp"
 #include "assembly/ParticleUpdate.hpp"
 #include "basis/Method.hpp"
 
@@ -104,6 +105,62 @@ TEST(Forces, InternalForceSumsToZero) {
     EXPECT_GT(size, 1.0);
     EXPECT_NEAR(sum, 0.0, 1e-13 * size) << methodName(method);
   }
+}
+
+}  // namespace
+}  // namespace impm
+
+namespace impm {
+namespace {
+
+TEST(Mass, ConsistentRowsSumToTheLumpedMassAndInertiaMatchesTheMatrix) {
+  for (Method method : {Method::mpm, Method::gimp, Method::cpdi}) {
+    Fixture f(method);
+    auto m = Kokkos::create_mirror_view(f.ps.mass);
+    for (int p = 0; p < 6; ++p)
+      m(p) = 1.0 + 0.5 * p;
+    Kokkos::deep_copy(f.ps.mass, m);
+    // Lumped mass, and M times a grid field a computed particle-wise (consistent).
+    Kokkos::View<double**, Kokkos::LayoutLeft> lumped("m", 5, 1), ma("Ma", 5, 1), ones("1", 5, 1);
+    Kokkos::deep_copy(ones, 1.0);
+    addLumpedMass<1>(f.map, f.lids, f.ps.mass, lumped);
+    addInertiaForce<1>(MassType::consistent, f.map, f.lids, f.ps.mass, ones, ma);
+    auto l = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), lumped);
+    auto c = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ma);
+    double total = 0;
+    for (int i = 0; i < 5; ++i) {
+      EXPECT_NEAR(c(i, 0), l(i, 0), 1e-14) << methodName(method);  // rows of M sum to m_i
+      total += l(i, 0);
+    }
+    EXPECT_NEAR(total, 1.0 * 6 + 0.5 * 15, 1e-13) << methodName(method);  // mass is conserved
+    // Momentum: sum_i (sum_p m_p phi_ip v_p) = sum_p m_p v_p.
+    Kokkos::deep_copy(f.ps.v, 2.0);
+    Kokkos::View<double**, Kokkos::LayoutLeft> p("p", 5, 1);
+    particleToGrid<1>(f.map, f.lids, f.ps.mass, f.ps.v, p);
+    auto ph = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p);
+    double momentum = 0;
+    for (int i = 0; i < 5; ++i)
+      momentum += ph(i, 0);
+    EXPECT_NEAR(momentum, 2.0 * total, 1e-13) << methodName(method);
+  }
+}
+
+TEST(GridToParticle, FlipAddsTheChangePicTakesTheField) {
+  Fixture f(Method::cpdi);
+  Kokkos::deep_copy(f.ps.v, 1.0);
+  auto vOld = f.linearField(0.0, 0.5), vNew = f.linearField(0.0, 0.75);
+  auto aNew = f.linearField(2.0, 0.0);
+  gridToParticleVelocity<1>(f.map, f.lids, vOld, vNew, aNew, 1.0, f.ps);  // FLIP
+  auto v = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), f.ps.v);
+  auto a = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), f.ps.a);
+  for (int p = 0; p < 6; ++p) {
+    EXPECT_NEAR(v(p, 0), 1.25, 1e-14);
+    EXPECT_NEAR(a(p, 0), 2.0 * (0.1 + 0.15 * p), 1e-14);  // linear fields are reproduced
+  }
+  gridToParticleVelocity<1>(f.map, f.lids, vOld, vNew, aNew, 0.0, f.ps);  // PIC
+  v = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), f.ps.v);
+  for (int p = 0; p < 6; ++p)
+    EXPECT_NEAR(v(p, 0), 0.75, 1e-14);
 }
 
 }  // namespace

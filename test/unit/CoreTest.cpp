@@ -182,3 +182,84 @@ TEST(Collective, AFailureOnOneRankStopsEveryRank) {
 
 }  // namespace
 }  // namespace impm
+
+#include <random>
+
+#include "core/Migration.hpp"
+
+namespace impm {
+namespace {
+
+// Every field of particle id k holds values derived from k, so any mix-up shows.
+template <class View>
+void fillFrom(View& view, const Kokkos::View<GlobalId*>::HostMirror& id) {
+  auto h = Kokkos::create_mirror_view(view);
+  using Value = typename View::non_const_value_type;
+  Value* data = h.data();
+  const std::size_t width = id.extent(0) ? h.span() / id.extent(0) : 0;
+  for (std::size_t p = 0; p < id.extent(0); ++p)
+    for (std::size_t w = 0; w < width; ++w)
+      data[p * width + w] =
+          static_cast<Value>(id(p) * 1000 + w + (std::is_floating_point<Value>::value ? 0.25 : 0));
+  Kokkos::deep_copy(view, h);
+}
+
+TEST(Migration, RandomOwnersAndBackKeepEveryFieldBitForBit) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  const int size = comm->getSize(), rank = comm->getRank();
+  const std::size_t n = 7 + rank;  // ranks hold different counts
+  ParticleSet<2> ps(n);
+  auto id = Kokkos::create_mirror_view(ps.id);
+  for (std::size_t p = 0; p < n; ++p)
+    id(p) = static_cast<GlobalId>(p * size + rank);
+  Kokkos::deep_copy(ps.id, id);
+  ps.forEachField([&](auto& view) {
+    if (static_cast<const void*>(view.data()) != ps.id.data())
+      fillFrom(view, id);
+  });
+  std::mt19937 rng(17 + rank);
+  std::vector<int> random(n);
+  for (auto& r : random)
+    r = static_cast<int>(rng() % size);
+  migrateParticles(ps, random, *comm);
+  // Back home: the origin of id k is k % size.
+  auto moved = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.id);
+  std::vector<int> home(ps.size());
+  for (std::size_t p = 0; p < ps.size(); ++p)
+    home[p] = static_cast<int>(moved(p) % size);
+  migrateParticles(ps, home, *comm);
+  ASSERT_EQ(ps.size(), n);
+  auto back = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.id);
+  std::vector<std::size_t> order(n);
+  for (std::size_t p = 0; p < n; ++p)
+    order[p] = p;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return back(a) < back(b); });
+  ParticleSet<2> expected(n);
+  Kokkos::deep_copy(expected.id, id);
+  expected.forEachField([&](auto& view) {
+    if (static_cast<const void*>(view.data()) != expected.id.data())
+      fillFrom(view, id);
+  });
+  // Compare field by field through raw bytes, after sorting by id.
+  std::vector<std::vector<char>> got, want;
+  auto bytes = [&](auto& view, const std::vector<std::size_t>* perm) {
+    auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), view);
+    const std::size_t row =
+        n ? h.span() / n * sizeof(typename std::decay_t<decltype(h)>::value_type) : 0;
+    std::vector<char> out(n * row);
+    const char* data = reinterpret_cast<const char*>(h.data());
+    for (std::size_t p = 0; p < n; ++p)
+      std::copy(data + (perm ? (*perm)[p] : p) * row, data + ((perm ? (*perm)[p] : p) + 1) * row,
+                out.begin() + p * row);
+    return out;
+  };
+  ps.forEachField([&](auto& view) { got.push_back(bytes(view, &order)); });
+  expected.forEachField([&](auto& view) { want.push_back(bytes(view, nullptr)); });
+  ASSERT_EQ(got.size(), want.size());
+  for (std::size_t f = 0; f < got.size(); ++f)
+    EXPECT_TRUE(got[f] == want[f]) << "field " << f;
+}
+
+}  // namespace
+}  // namespace impm

@@ -1,0 +1,63 @@
+#include "app/GridFields.hpp"
+
+namespace impm {
+
+namespace {
+
+std::vector<std::string> fieldNames(bool displacement, bool dynamic, int dim) {
+  std::vector<std::string> names;
+  const char* axes[] = {"X", "Y", "Z"};
+  if (displacement)
+    for (int d = 0; d < dim; ++d)
+      names.push_back(std::string("displacement") + axes[d]);
+  if (dynamic) {
+    for (int d = 0; d < dim; ++d)
+      names.push_back(std::string("velocity") + axes[d]);
+    names.push_back("mass");
+  }
+  return names;
+}
+
+}  // namespace
+
+template <int Dim>
+GridFields<Dim>::GridFields(const NodeOwnership<Dim>& ownership, bool displacement, bool dynamic)
+    : names_(fieldNames(displacement, dynamic, Dim)),
+      values_(ownership.nodeMap(), std::max<std::size_t>(names_.size(), 1)) {
+  int column = 0;
+  if (displacement)
+    displacement_ = column, column += Dim;
+  if (dynamic)
+    velocity_ = column, mass_ = column + Dim;
+}
+
+template <int Dim>
+void GridFields<Dim>::update(const StepGrid<Dim>& step) {
+  if (velocity_ >= 0)
+    for (int c = velocity_; c <= mass_; ++c)
+      values_.getVectorNonConst(c)->putScalar(0.0);
+  const auto& map = *step.du.getMap();
+  auto du = step.du.getData();
+  Teuchos::ArrayRCP<const double> v, m;
+  if (step.velocity)
+    v = step.velocity->getData(), m = step.mass->getData();
+  for (decltype(du.size()) k = 0; k < du.size(); ++k) {
+    const GO dof = map.getGlobalElement(static_cast<LO>(k));
+    if (step.system.dofs().isExtraDof(dof))
+      continue;
+    const GO node = dof / Dim;
+    const int d = static_cast<int>(dof % Dim);
+    if (displacement_ >= 0)
+      values_.sumIntoGlobalValue(node, displacement_ + d, du[k]);
+    if (velocity_ >= 0 && step.velocity) {
+      values_.replaceGlobalValue(node, velocity_ + d, v[k]);
+      if (d == 0)
+        values_.replaceGlobalValue(node, mass_, m[k]);
+    }
+  }
+}
+
+template class GridFields<1>;
+template class GridFields<2>;
+
+}  // namespace impm

@@ -1,0 +1,29 @@
+#pragma once
+// The nodal fields written to the grid's Exodus file, on every grid node (zero where a node
+// carries no unknown): the accumulated displacement (static runs and fixed grids), and the
+// velocity and lumped mass of the last step (dynamic runs).
+
+#include <string>
+#include <vector>
+
+#include "core/NodeOwnership.hpp"
+#include "solver/StepperContext.hpp"
+
+namespace impm {
+
+template <int Dim>
+class GridFields {
+ public:
+  GridFields(const NodeOwnership<Dim>& ownership, bool displacement, bool dynamic);
+
+  const std::vector<std::string>& names() const { return names_; }
+  const MultiVector& values() const { return values_; }
+  void update(const StepGrid<Dim>& step);
+
+ private:
+  int displacement_ = -1, velocity_ = -1, mass_ = -1;  // first column of each, or -1
+  std::vector<std::string> names_;
+  MultiVector values_;
+};
+
+}  // namespace impm

@@ -1,0 +1,31 @@
+#pragma once
+// The history file's columns and rows: one row per step with time, end forces, energies
+// (kinetic, strain, their sum, the external work and the balance KE + SE - W), the total
+// momentum, and per body the centre-of-mass velocity and the particles' extent, then the
+// Newton and linear iteration counts.
+
+#include <string>
+#include <vector>
+
+#include "core/ParticleSet.hpp"
+#include "core/TpetraTypes.hpp"
+#include "solver/StepperContext.hpp"
+
+namespace impm {
+
+template <int Dim>
+class History {
+ public:
+  explicit History(const std::vector<std::string>& bodyNames);
+
+  const std::vector<std::string>& columns() const { return columns_; }
+  // The row of a step.  Collective (sums over every rank's particles).
+  std::vector<double> row(const StepRecord& record, double F0, double FL,
+                          const ParticleSet<Dim>& particles, const Comm& comm) const;
+
+ private:
+  std::size_t bodies_;
+  std::vector<std::string> columns_;
+};
+
+}  // namespace impm

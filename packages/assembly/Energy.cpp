@@ -1,0 +1,75 @@
+#include "assembly/Energy.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+
+namespace impm {
+
+namespace {
+
+double sumAll(const Comm& comm, double local) {
+  double global = 0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
+  return global;
+}
+
+}  // namespace
+
+template <int Dim>
+double kineticEnergy(const ParticleSet<Dim>& particles, const Comm& comm) {
+  auto m = particles.mass;
+  auto v = particles.v;
+  double local = 0;
+  Kokkos::parallel_reduce(
+      "impm::kineticEnergy", RangePolicy<DefaultExecSpace>(0, particles.size()),
+      KOKKOS_LAMBDA(const int p, double& sum) {
+        for (int d = 0; d < Dim; ++d)
+          sum += 0.5 * m(p) * v(p, d) * v(p, d);
+      },
+      local);
+  return sumAll(comm, local);
+}
+
+template <int Dim>
+double strainEnergy(const ParticleSet<Dim>& particles,
+                    const std::vector<std::shared_ptr<Material<Dim>>>& materials,
+                    const Comm& comm) {
+  typename ParticleSet<Dim>::Scalars W("W", particles.size());
+  for (std::size_t k = 0; k < materials.size(); ++k)
+    materials[k]->energyDensity(particles, particles.F, static_cast<int>(k), W);
+  auto V0 = particles.volume0;
+  auto A = particles.section;
+  double local = 0;
+  Kokkos::parallel_reduce(
+      "impm::strainEnergy", RangePolicy<DefaultExecSpace>(0, particles.size()),
+      KOKKOS_LAMBDA(const int p, double& sum) { sum += V0(p) * A(p) * W(p); }, local);
+  return sumAll(comm, local);
+}
+
+template <int Dim>
+double bodyForceWork(const ParticleSet<Dim>& particles,
+                     const typename ParticleSet<Dim>::Vectors& uBefore, double scale,
+                     const Comm& comm) {
+  auto f = particles.force;
+  auto u = particles.u;
+  double local = 0;
+  Kokkos::parallel_reduce(
+      "impm::bodyForceWork", RangePolicy<DefaultExecSpace>(0, particles.size()),
+      KOKKOS_LAMBDA(const int p, double& sum) {
+        for (int d = 0; d < Dim; ++d)
+          sum += f(p, d) * (u(p, d) - uBefore(p, d));
+      },
+      local);
+  return scale * sumAll(comm, local);
+}
+
+#define IMPM_INSTANTIATE(D)                                                                       \
+  template double kineticEnergy<D>(const ParticleSet<D>&, const Comm&);                           \
+  template double strainEnergy<D>(const ParticleSet<D>&,                                          \
+                                  const std::vector<std::shared_ptr<Material<D>>>&, const Comm&); \
+  template double bodyForceWork<D>(const ParticleSet<D>&, const ParticleSet<D>::Vectors&, double, \
+                                   const Comm&);
+IMPM_INSTANTIATE(1)
+IMPM_INSTANTIATE(2)
+#undef IMPM_INSTANTIATE
+
+}  // namespace impm

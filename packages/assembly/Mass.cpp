@@ -1,0 +1,130 @@
+#include "assembly/Mass.hpp"
+
+namespace impm {
+
+template <int Dim>
+void particleToGrid(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryDofs,
+                    const typename ParticleSet<Dim>::Scalars& mass,
+                    const typename ParticleSet<Dim>::Vectors& q, const LocalValuesMutable& f) {
+  auto rowPtr = map.rowPtr;
+  auto phi = map.phi;
+  Kokkos::parallel_for(
+      "impm::particleToGrid", RangePolicy<DefaultExecSpace>(0, map.numParticles()),
+      KOKKOS_LAMBDA(const int p) {
+        for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k)
+          for (int d = 0; d < Dim; ++d)
+            Kokkos::atomic_add(&f(entryDofs(k) + d, 0), mass(p) * phi(k) * q(p, d));
+      });
+}
+
+template <int Dim>
+void addLumpedMass(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryDofs,
+                   const typename ParticleSet<Dim>::Scalars& mass, const LocalValuesMutable& m) {
+  auto rowPtr = map.rowPtr;
+  auto phi = map.phi;
+  Kokkos::parallel_for(
+      "impm::lumpedMass", RangePolicy<DefaultExecSpace>(0, map.numParticles()),
+      KOKKOS_LAMBDA(const int p) {
+        for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k)
+          for (int d = 0; d < Dim; ++d)
+            Kokkos::atomic_add(&m(entryDofs(k) + d, 0), mass(p) * phi(k));
+      });
+}
+
+template <int Dim>
+void addInertiaForce(MassType type, const ParticleGridMap<Dim>& map,
+                     const Kokkos::View<LO*>& entryDofs,
+                     const typename ParticleSet<Dim>::Scalars& mass, const LocalValues& a,
+                     const LocalValuesMutable& f) {
+  auto rowPtr = map.rowPtr;
+  auto phi = map.phi;
+  const bool consistent = type == MassType::consistent;
+  Kokkos::parallel_for(
+      "impm::inertiaForce", RangePolicy<DefaultExecSpace>(0, map.numParticles()),
+      KOKKOS_LAMBDA(const int p) {
+        double ap[Dim] = {};  // the particle's acceleration sum_j phi_jp a_j
+        if (consistent)
+          for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k)
+            for (int d = 0; d < Dim; ++d)
+              ap[d] += phi(k) * a(entryDofs(k) + d, 0);
+        for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k)
+          for (int d = 0; d < Dim; ++d) {
+            const double ad = consistent ? ap[d] : a(entryDofs(k) + d, 0);
+            Kokkos::atomic_add(&f(entryDofs(k) + d, 0), mass(p) * phi(k) * ad);
+          }
+      });
+}
+
+template <int Dim>
+void addMassMatrix(MassType type, double scale, const ParticleGridMap<Dim>& map,
+                   const Kokkos::View<LO*>& entryRows, const Kokkos::View<LO*>& entryCols,
+                   const typename ParticleSet<Dim>::Scalars& mass, const LocalMatrix& K) {
+  auto rowPtr = map.rowPtr;
+  auto phi = map.phi;
+  const bool consistent = type == MassType::consistent;
+  Kokkos::parallel_for(
+      "impm::massMatrix", RangePolicy<DefaultExecSpace>(0, map.numParticles()),
+      KOKKOS_LAMBDA(const int p) {
+        for (std::size_t ki = rowPtr(p); ki < rowPtr(p + 1); ++ki)
+          for (int d = 0; d < Dim; ++d) {
+            const LO row = entryRows(ki) + d;
+            if (!consistent) {
+              const LO col = entryCols(ki) + d;
+              const double value = scale * mass(p) * phi(ki);
+              K.sumIntoValues(row, &col, 1, &value, false, true);
+              continue;
+            }
+            for (std::size_t kj = rowPtr(p); kj < rowPtr(p + 1); ++kj) {
+              const LO col = entryCols(kj) + d;
+              const double value = scale * mass(p) * phi(ki) * phi(kj);
+              K.sumIntoValues(row, &col, 1, &value, false, true);
+            }
+          }
+      });
+}
+
+template <int Dim>
+void gridToParticleVelocity(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryDofs,
+                            const LocalValues& vOld, const LocalValues& vNew,
+                            const LocalValues& aNew, double flip, ParticleSet<Dim>& particles) {
+  auto rowPtr = map.rowPtr;
+  auto phi = map.phi;
+  auto v = particles.v;
+  auto a = particles.a;
+  Kokkos::parallel_for(
+      "impm::gridToParticleVelocity", RangePolicy<DefaultExecSpace>(0, map.numParticles()),
+      KOKKOS_LAMBDA(const int p) {
+        for (int d = 0; d < Dim; ++d) {
+          double change = 0, pic = 0, acc = 0;
+          for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k) {
+            const LO i = entryDofs(k) + d;
+            change += phi(k) * (vNew(i, 0) - vOld(i, 0));
+            pic += phi(k) * vNew(i, 0);
+            acc += phi(k) * aNew(i, 0);
+          }
+          v(p, d) = flip * (v(p, d) + change) + (1.0 - flip) * pic;
+          a(p, d) = acc;
+        }
+      });
+}
+
+#define IMPM_INSTANTIATE(D)                                                                       \
+  template void particleToGrid<D>(const ParticleGridMap<D>&, const Kokkos::View<LO*>&,            \
+                                  const ParticleSet<D>::Scalars&, const ParticleSet<D>::Vectors&, \
+                                  const LocalValuesMutable&);                                     \
+  template void addLumpedMass<D>(const ParticleGridMap<D>&, const Kokkos::View<LO*>&,             \
+                                 const ParticleSet<D>::Scalars&, const LocalValuesMutable&);      \
+  template void addInertiaForce<D>(MassType, const ParticleGridMap<D>&, const Kokkos::View<LO*>&, \
+                                   const ParticleSet<D>::Scalars&, const LocalValues&,            \
+                                   const LocalValuesMutable&);                                    \
+  template void addMassMatrix<D>(MassType, double, const ParticleGridMap<D>&,                     \
+                                 const Kokkos::View<LO*>&, const Kokkos::View<LO*>&,              \
+                                 const ParticleSet<D>::Scalars&, const LocalMatrix&);             \
+  template void gridToParticleVelocity<D>(const ParticleGridMap<D>&, const Kokkos::View<LO*>&,    \
+                                          const LocalValues&, const LocalValues&,                 \
+                                          const LocalValues&, double, ParticleSet<D>&);
+IMPM_INSTANTIATE(1)
+IMPM_INSTANTIATE(2)
+#undef IMPM_INSTANTIATE
+
+}  // namespace impm

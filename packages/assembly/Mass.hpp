@@ -1,0 +1,48 @@
+#pragma once
+// Mass and the transfers between particles and grid (primer 1.2.1, 1.5.3), as kernels over
+// particles with atomic updates of overlap-local arrays:
+//   lumped mass        m_i = sum_p m_p phi_ip                           (eq. 1.49, 1.72)
+//   consistent mass    M_ij = sum_p m_p phi_ip phi_jp                   (eq. 1.48, 1.71)
+//   particle to grid   q_i = sum_p m_p phi_ip q_p  (momentum m v, or m a)
+//   inertia force      (M a)_i, with a the grid acceleration: lumped m_i a_i, consistent
+//                      sum_p m_p phi_ip (sum_j phi_jp a_j)
+
+#include "assembly/Forces.hpp"
+
+namespace impm {
+
+enum class MassType { lumped, consistent };
+
+// f(i, d) += sum_p m_p phi_ip q_p,d for every component d.
+template <int Dim>
+void particleToGrid(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryDofs,
+                    const typename ParticleSet<Dim>::Scalars& mass,
+                    const typename ParticleSet<Dim>::Vectors& q, const LocalValuesMutable& f);
+
+// m_i for every component (the lumped mass, and the row sums of the consistent mass).
+template <int Dim>
+void addLumpedMass(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryDofs,
+                   const typename ParticleSet<Dim>::Scalars& mass, const LocalValuesMutable& m);
+
+// f += M a (a: grid accelerations, overlap-local).
+template <int Dim>
+void addInertiaForce(MassType type, const ParticleGridMap<Dim>& map,
+                     const Kokkos::View<LO*>& entryDofs,
+                     const typename ParticleSet<Dim>::Scalars& mass, const LocalValues& a,
+                     const LocalValuesMutable& f);
+
+// K += scale M (rows: overlap-map indices, columns: the matrix's column map).
+template <int Dim>
+void addMassMatrix(MassType type, double scale, const ParticleGridMap<Dim>& map,
+                   const Kokkos::View<LO*>& entryRows, const Kokkos::View<LO*>& entryCols,
+                   const typename ParticleSet<Dim>::Scalars& mass, const LocalMatrix& K);
+
+// Particle velocities and accelerations from the grid after a step:
+//   FLIP v_p += sum_i phi_ip (v_i^new - v_i^old),  PIC v_p = sum_i phi_ip v_i^new,
+//   v_p = flip * FLIP + (1 - flip) * PIC,  a_p = sum_i phi_ip a_i^new.
+template <int Dim>
+void gridToParticleVelocity(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryDofs,
+                            const LocalValues& vOld, const LocalValues& vNew,
+                            const LocalValues& aNew, double flip, ParticleSet<Dim>& particles);
+
+}  // namespace impm

@@ -1,0 +1,22 @@
+#include "solver/ParticleAdvance.hpp"
+
+#include "assembly/ParticleUpdate.hpp"
+#include "core/Timers.hpp"
+
+namespace impm {
+
+template <int Dim>
+void advanceParticles(GridSystem<Dim>& system, const Vector& du, Kinematics kinematics,
+                      ParticleSet<Dim>& particles) {
+  IMPM_TIMER("particle update");
+  typename ParticleSet<Dim>::Tensors F("F", particles.size()), P("P", particles.size());
+  system.trialState(du, F, P);
+  auto duOverlap = system.toOverlap(du);
+  updateParticles<Dim>(kinematics, system.particleGridMap(), system.entryDofs(),
+                       duOverlap->getLocalViewDevice(Tpetra::Access::ReadOnly), F, P, particles);
+}
+
+template void advanceParticles<1>(GridSystem<1>&, const Vector&, Kinematics, ParticleSet<1>&);
+template void advanceParticles<2>(GridSystem<2>&, const Vector&, Kinematics, ParticleSet<2>&);
+
+}  // namespace impm
