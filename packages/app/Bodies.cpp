@@ -25,6 +25,9 @@ Teuchos::ParameterList bodyValidParameters() {
   declareFormula(valid, "Initial Displacement", "0", {"X"},
                  "1-D: initial displacement u0(X); particles start at X + u0 with F = 1 + u0' "
                  "(a centred difference of the formula)");
+  declareFormula(valid, "Body Force", "0", {"x", "X", "t"},
+                 "Force per unit mass b (gravity, manufactured loads) at current position x, "
+                 "reference position X and time t; adds m_p b to each particle");
   declareFormula(valid, "Distributed Load", "0", {"x", "X", "t"},
                  "1-D: distributed load f (force per unit length, primer eq. 1.1) at current "
                  "position x, reference position X and time t");
@@ -106,6 +109,7 @@ Bodies<Dim>::Bodies(const Teuchos::ParameterList& deck,
     b.particlesPerCell = p.get<int>("Particles Per Cell");
     b.section = Formula(formulaText(p, "Section"), {"x"});
     b.load = Formula(formulaText(p, "Distributed Load"), {"x", "X", "t"});
+    b.bodyForce = Formula(formulaText(p, "Body Force"), {"x", "X", "t"});
     b.velocity = Formula(formulaText(p, "Initial Velocity"), {"x", "X"});
     b.displacement = Formula(formulaText(p, "Initial Displacement"), {"X"});
     bodies_.push_back(std::move(b));
@@ -229,9 +233,13 @@ void Bodies<Dim>::applyLoads(ParticleSet<Dim>& particles, double time) const {
   auto X = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.X);
   auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.x);
   auto volume = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.volume);
+  auto mass = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.mass);
   auto force = Kokkos::create_mirror_view(particles.force);
-  for (std::size_t p = 0; p < particles.size(); ++p)
-    force(p, 0) = bodies_[body(p)].load(x(p, 0), X(p, 0), time) * volume(p);
+  for (std::size_t p = 0; p < particles.size(); ++p) {
+    const Body& b = bodies_[body(p)];
+    force(p, 0) =
+        b.load(x(p, 0), X(p, 0), time) * volume(p) + mass(p) * b.bodyForce(x(p, 0), X(p, 0), time);
+  }
   Kokkos::deep_copy(particles.force, force);
 }
 

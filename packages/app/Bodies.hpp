@@ -27,7 +27,8 @@ struct Body {
   double upper = 0.0;
   int particlesPerCell = 2;
   Formula section;       // A(x)
-  Formula load;          // distributed load f(x, X, t)
+  Formula load;          // distributed load f(x, X, t), per unit length
+  Formula bodyForce;     // body force b(x, X, t), per unit mass
   Formula velocity;      // initial velocity v(x, X)
   Formula displacement;  // initial displacement u0(X)
 };
@@ -57,8 +58,8 @@ class Bodies {
   // Body names usable in column headers (spaces become underscores).
   std::vector<std::string> columnNames() const;
 
-  // Sets particles.force to the distributed loads at `time` (force per unit length times
-  // the particle length in 1-D).
+  // Sets particles.force to the loads at `time`: the distributed load (per unit length)
+  // times the particle's length plus its mass times the body force (per unit mass).
   void applyLoads(ParticleSet<Dim>& particles, double time) const;
 
  private:

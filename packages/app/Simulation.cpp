@@ -176,8 +176,7 @@ void Simulation<Dim>::printProgress(const StepRecord& r, const std::vector<doubl
   const auto& ti = deck_.sublist("Time Integration");
   std::cout << "  step " << r.step;
   if (isStatic(ti)) {
-    std::cout << "/" << ti.get<int>("Load Steps") << "  load " << std::fixed << std::setprecision(3)
-              << r.loadFactor << std::defaultfloat;
+    std::cout << "  load " << std::setprecision(8) << r.loadFactor;
   } else {
     std::cout << "  t " << std::setprecision(6) << r.time << "  dt " << r.dt << "  energy "
               << std::setprecision(8) << r.kineticEnergy + r.strainEnergy;

@@ -66,10 +66,10 @@ Formula::Formula(const std::string& expression, const std::vector<std::string>& 
   parser_ = p;
 }
 
-double Formula::operator()(const std::vector<double>& values) const {
+double Formula::evaluate(const double* values, std::size_t count) const {
   if (!parser_)
     return constant_;
-  for (std::size_t k = 0; k < parser_->values.size() && k < values.size(); ++k)
+  for (std::size_t k = 0; k < parser_->values.size() && k < count; ++k)
     parser_->values[k] = values[k];
   try {
     return parser_->parser.Eval();

@@ -17,11 +17,17 @@ class Formula {
   explicit Formula(double value = 0.0);
 
   // Values in the order of the variable names given at construction.
-  double operator()(const std::vector<double>& values) const;
-  double operator()(double v0) const { return (*this)(std::vector<double>{v0}); }
-  double operator()(double v0, double v1) const { return (*this)(std::vector<double>{v0, v1}); }
+  double operator()(const std::vector<double>& values) const {
+    return evaluate(values.data(), values.size());
+  }
+  double operator()(double v0) const { return evaluate(&v0, 1); }
+  double operator()(double v0, double v1) const {
+    const double v[2] = {v0, v1};
+    return evaluate(v, 2);
+  }
   double operator()(double v0, double v1, double v2) const {
-    return (*this)(std::vector<double>{v0, v1, v2});
+    const double v[3] = {v0, v1, v2};
+    return evaluate(v, 3);
   }
 
   bool isConstant() const { return !parser_; }
@@ -32,6 +38,7 @@ class Formula {
  private:
   struct Parser;
   std::string allowedText() const;
+  double evaluate(const double* values, std::size_t count) const;
   std::string expression_;
   double constant_ = 0.0;
   std::vector<std::string> variables_;

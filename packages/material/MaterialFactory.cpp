@@ -4,7 +4,8 @@
 
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
-#include "material/LinearElastic1D.hpp"
+#include "material/ElasticLaws1D.hpp"
+#include "material/FormulaLaw1D.hpp"
 
 namespace impm {
 
@@ -33,7 +34,11 @@ const std::vector<Entry<Dim>>& registry();
 template <>
 const std::vector<Entry<1>>& registry<1>() {
   static const std::vector<Entry<1>> models = {
-      entry<LinearElastic1D, 1>(),
+      entry<ElasticLaw1D<LinearLaw>, 1>(),
+      entry<ElasticLaw1D<LinearFiniteLaw>, 1>(),
+      entry<ElasticLaw1D<CubicLaw>, 1>(),
+      entry<ElasticLaw1D<NeoHookeanLaw1D>, 1>(),
+      entry<FormulaLaw1D, 1>(),
   };
   return models;
 }

@@ -145,7 +145,19 @@ def fails(args):
     problems = []
     if r.returncode != args.exit:
         problems.append("exit status %d, expected %d" % (r.returncode, args.exit))
-    if os.path.exists(out) and os.listdir(out):
+    if args.outputs_remain:
+        # A numerical failure keeps what was written: complete history rows, readable Exodus.
+        history = os.path.join(out, stem(args.deck) + "_history.csv")
+        rows = read_csv(history) if os.path.exists(history) else []
+        if len(rows) < 2:
+            problems.append("the history holds %d rows, expected the steps done" % len(rows))
+        for f in sorted(os.listdir(out)) if os.path.exists(out) else []:
+            if f.endswith(".exo"):
+                if subprocess.run(["ncdump", "-h", os.path.join(out, f)],
+                                  capture_output=True).returncode != 0:
+                    problems.append("%s is not a readable netCDF/Exodus file" % f)
+        print("outputs kept: %d history rows" % len(rows))
+    elif os.path.exists(out) and os.listdir(out):
         problems.append("output files were written: %s" % ", ".join(sorted(os.listdir(out))))
     # impm's own lines (mpiexec adds its own when a rank exits with an error).
     own = [l for l in r.stderr.splitlines() if l.startswith("impm:")]
@@ -155,6 +167,71 @@ def fails(args):
     for p in problems:
         print("CHECK FAILED:", p)
     sys.exit(1 if problems else 0)
+
+
+def newton(args):
+    """Parses the Newton log (Print Iterations) and checks the order of convergence."""
+    out = tempfile.mkdtemp(prefix="impm-newton-", dir=".")
+    r = run_impm(args, args.deck, out, ["Solver/Print Iterations=true"] + args.set, args.np)
+    shutil.rmtree(out)
+    if r.returncode != 0:
+        print(r.stdout, r.stderr)
+        sys.exit("impm failed")
+    solves, current = [], None
+    for line in r.stdout.splitlines():
+        m = re.match(r"\s*newton\s+(\d+)\s+\|R\| = (\S+)", line)
+        if not m:
+            continue
+        if int(m.group(1)) == 0:
+            current = []
+            solves.append(current)
+        current.append(float(m.group(2)))
+    failures = []
+    for k, res in enumerate(solves):
+        iterations = len(res) - 1
+        # The order p of r_(k+1) ~ r_k^p over the last iterations above the round-off floor.
+        floor = args.floor * res[0]
+        useful = [v for v in res if v > floor]
+        orders = [math.log(useful[j + 1] / useful[j]) / math.log(useful[j] / useful[j - 1])
+                  for j in range(1, len(useful) - 1)]
+        last = orders[-1] if orders else float("nan")
+        print("solve %d: %d iterations, |R| %s, last order %.2f"
+              % (k + 1, iterations, " ".join("%.2e" % v for v in res), last))
+        if iterations > args.max_iterations:
+            failures.append("solve %d took %d iterations" % (k + 1, iterations))
+        if orders and last < args.min_order:
+            failures.append("solve %d converged with order %.2f < %g" % (k + 1, last, args.min_order))
+        if args.ratio_bound:
+            for j in range(len(useful) - 1):
+                ratio = useful[j + 1] / useful[j] ** 2
+                if j >= 1 and ratio > args.ratio_bound:
+                    failures.append("solve %d: r_(k+1)/r_k^2 = %.2e at iteration %d" % (k + 1, ratio, j + 1))
+    if not solves:
+        failures.append("no Newton iterations in the log")
+    for f in failures:
+        print("FAIL:", f)
+    sys.exit(1 if failures else 0)
+
+
+def same(args):
+    """Two decks must give the same particle table."""
+    tables = []
+    for deck in (args.deck, args.other):
+        out = tempfile.mkdtemp(prefix="impm-same-", dir=".")
+        r = run_impm(args, deck, out, ["Solver/Print Iterations=false"] + args.set)
+        if r.returncode != 0:
+            print(r.stdout, r.stderr)
+            sys.exit("impm failed on " + deck)
+        tables.append(read_csv(os.path.join(out, stem(deck) + "_particles.csv")))
+        shutil.rmtree(out)
+    worst = 0.0
+    for c in args.columns:
+        a = [float(row[c]) for row in tables[0]]
+        b = [float(row[c]) for row in tables[1]]
+        scale = max(max(abs(v) for v in a), 1e-300)
+        worst = max(worst, max(abs(x - y) for x, y in zip(a, b)) / scale)
+    print("largest relative difference %.3e over columns %s" % (worst, ", ".join(args.columns)))
+    sys.exit(1 if worst > args.rtol else 0)
 
 
 def docs(args):
@@ -216,12 +293,32 @@ def main():
     f.add_argument("--exit", type=int, default=1)
     f.add_argument("--np", type=int, default=1)
     f.add_argument("--set", action="append", default=[])
+    f.add_argument("--outputs-remain", action="store_true",
+                   help="a numerical failure: the outputs of the steps done must remain readable")
+
+    n = sub.add_parser("newton")
+    n.add_argument("--deck", required=True)
+    n.add_argument("--max-iterations", type=int, default=20)
+    n.add_argument("--min-order", type=float, default=1.0)
+    n.add_argument("--ratio-bound", type=float, help="bound of r_(k+1) / r_k^2 (quadratic)")
+    n.add_argument("--floor", type=float, default=1e-12,
+                   help="residuals below this times the first are round-off")
+    n.add_argument("--np", type=int, default=1)
+    n.add_argument("--set", action="append", default=[])
+
+    s = sub.add_parser("same")
+    s.add_argument("--deck", required=True)
+    s.add_argument("--other", required=True)
+    s.add_argument("--columns", nargs="+", default=["u", "strain", "stress"])
+    s.add_argument("--rtol", type=float, default=1e-8)
+    s.add_argument("--set", action="append", default=[])
 
     d = sub.add_parser("docs")
     d.add_argument("--guide", required=True)
 
     args = p.parse_args()
-    {"convergence": convergence, "ranks": ranks, "fails": fails, "docs": docs}[args.check](args)
+    {"convergence": convergence, "ranks": ranks, "fails": fails, "docs": docs, "newton": newton,
+     "same": same}[args.check](args)
 
 
 if __name__ == "__main__":

@@ -1,7 +1,11 @@
-// material: the 1-D linear law through the first-Piola interface, position-dependent
-// parameters, and clear errors for inadmissible values.
+// material: the 1-D laws through the first-Piola interface (stress, tangent = dP/dF and
+// energy with dW/dF = P for every model), position-dependent parameters, the formula law's
+// finite-difference tangent, and clear errors for inadmissible values.
 
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
 
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
@@ -10,12 +14,16 @@
 namespace impm {
 namespace {
 
+std::shared_ptr<Material<1>> material(Teuchos::ParameterList p) {
+  validateParameters(p, materialValidParameters());
+  return createMaterial<1>("m", p);
+}
+
 std::shared_ptr<Material<1>> linear(const std::string& E) {
   Teuchos::ParameterList p;
   p.set("Model", std::string("linear"));
   p.set("E", E);
-  validateParameters(p, materialValidParameters());
-  return createMaterial<1>("m", p);
+  return material(p);
 }
 
 ParticleSet<1> particlesAt(const std::vector<double>& X) {
@@ -27,7 +35,144 @@ ParticleSet<1> particlesAt(const std::vector<double>& X) {
   return ps;
 }
 
-TEST(LinearElastic1D, StressAndTangentFromF) {
+struct LawValues {
+  std::vector<double> P, A, W;
+};
+
+// P, dP/dF and W of material m at particles with reference positions X and stretches F.
+LawValues evaluate(const Material<1>& m, const std::vector<double>& X,
+                   const std::vector<double>& F) {
+  auto ps = particlesAt(X);
+  m.initialize(ps, 0);
+  const std::size_t n = X.size();
+  ParticleSet<1>::Tensors Fv("F", n), P("P", n);
+  Material<1>::Tangents A("A", n);
+  ParticleSet<1>::Scalars W("W", n);
+  auto Fh = Kokkos::create_mirror_view(Fv);
+  for (std::size_t p = 0; p < n; ++p)
+    Fh(p, 0, 0) = F[p];
+  Kokkos::deep_copy(Fv, Fh);
+  m.firstPiola(ps, Fv, 0, P, A);
+  m.energyDensity(ps, Fv, 0, W);
+  auto Ph = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), P);
+  auto Ah = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), A);
+  auto Wh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), W);
+  LawValues v;
+  for (std::size_t p = 0; p < n; ++p)
+    v.P.push_back(Ph(p, 0, 0)), v.A.push_back(Ah(p, 0, 0, 0, 0)), v.W.push_back(Wh(p));
+  return v;
+}
+
+Teuchos::ParameterList model(const std::string& name) {
+  Teuchos::ParameterList p;
+  p.set("Model", name);
+  if (name == "formula") {
+    p.set("Stress", std::string("(1 + x)*eps + 10*eps^3"));
+  } else {
+    p.set("E", std::string("1 + x"));
+    if (name == "cubic")
+      p.set("C", 10.0);
+  }
+  return p;
+}
+
+// Every model: W(1) = 0, P(1) = 0, dW/dF = P and dP/dF = A (central differences of the
+// values the material returns, step 1e-5: truncation error about 1e-10).
+class EveryLaw : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(EveryLaw, TangentAndEnergyAreConsistentWithTheStress) {
+  auto m = material(model(GetParam()));
+  const double h = 1e-5;
+  for (double F : {0.7, 1.0, 1.13, 1.6}) {
+    const std::vector<double> X = {0.3, 0.3, 0.3};
+    const auto v = evaluate(*m, X, {F - h, F, F + h});
+    EXPECT_NEAR(v.A[1], (v.P[2] - v.P[0]) / (2 * h), 1e-7 * std::max(1.0, std::abs(v.A[1])))
+        << GetParam() << " at F = " << F;
+    EXPECT_NEAR(v.P[1], (v.W[2] - v.W[0]) / (2 * h), 1e-7 * std::max(1.0, std::abs(v.P[1])))
+        << GetParam() << " at F = " << F;
+  }
+  const auto rest = evaluate(*m, {0.3}, {1.0});
+  EXPECT_NEAR(rest.P[0], 0.0, 1e-15) << GetParam();
+  EXPECT_NEAR(rest.W[0], 0.0, 1e-15) << GetParam();
+  EXPECT_NEAR(rest.A[0], 1.3, 1e-9) << GetParam() << ": the small-strain modulus E(x)";
+}
+
+INSTANTIATE_TEST_SUITE_P(Material, EveryLaw,
+                         ::testing::Values("linear", "linear-finite", "cubic", "neo-hookean-1d",
+                                           "formula"));
+
+TEST(ElasticLaws1D, ClosedFormValues) {
+  const double e = 0.2, F = 1.0 + e, E = 1.5;  // at x = 0.5
+  auto cubic = evaluate(*material(model("cubic")), {0.5}, {F});
+  EXPECT_NEAR(cubic.P[0], E * e + 10 * e * e * e, 1e-15);
+  EXPECT_NEAR(cubic.A[0], E + 30 * e * e, 1e-14);
+  auto neo = evaluate(*material(model("neo-hookean-1d")), {0.5}, {F});
+  EXPECT_NEAR(neo.P[0], 0.5 * E * (F - 1 / F), 1e-15);
+  EXPECT_NEAR(neo.A[0], 0.5 * E * (1 + 1 / (F * F)), 1e-15);
+  EXPECT_TRUE(material(model("linear"))->isLinear());
+  EXPECT_FALSE(material(model("cubic"))->isLinear());
+  EXPECT_FALSE(material(model("formula"))->isLinear());
+}
+
+TEST(ElasticLaws1D, NeoHookeanRefusesNonPositiveStretch) {
+  auto m = material(model("neo-hookean-1d"));
+  try {
+    evaluate(*m, {0.1, 0.2}, {0.5, -0.25});
+    FAIL() << "no error";
+  } catch (const NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("not defined at F = -0.25"), std::string::npos)
+        << e.what();
+  }
+}
+
+// The central difference of the formula law with step delta = eps_mach^(1/3) max(|eps|,
+// 1e-3) has truncation error sigma''' delta^2 / 6 and round-off error about eps_mach
+// |exp(3 eps)| / delta (the formula subtracts 1 from exp(3 eps)); the test asserts that
+// bound, and that it stays below 1e-7 of the tangent even at eps = 0, where the floor
+// makes delta smallest (6e-9).
+TEST(FormulaLaw1D, FiniteDifferenceTangentIsAccurate) {
+  auto p = model("formula");
+  p.set("Stress", std::string("exp(3*eps) - 1 + x*eps"));
+  auto m = material(p);
+  const double machine = std::numeric_limits<double>::epsilon();
+  for (double e : {0.0, 1e-6, -0.01, 0.4}) {
+    const auto v = evaluate(*m, {0.5}, {1.0 + e});
+    const double exact = 3 * std::exp(3 * e) + 0.5;
+    const double delta = std::cbrt(machine) * std::max(std::abs(e), 1e-3);
+    const double bound =
+        2 * machine * std::exp(3 * e) / delta + 27 * std::exp(3 * e) * delta * delta / 6;
+    EXPECT_LT(bound, 1e-7 * exact) << "eps = " << e;
+    EXPECT_NEAR(v.A[0], exact, bound) << "eps = " << e;
+    EXPECT_NEAR(v.P[0], std::exp(3 * e) - 1 + 0.5 * e, 1e-14) << "eps = " << e;
+  }
+}
+
+TEST(FormulaLaw1D, GivenTangentIsUsed) {
+  auto p = model("formula");
+  p.set("Tangent", std::string("42"));
+  const auto v = evaluate(*material(p), {0.5}, {1.2});
+  EXPECT_DOUBLE_EQ(v.A[0], 42.0);
+}
+
+// A law must be stiff at rest (the first Newton step and the explicit time step need it).
+TEST(FormulaLaw1D, LawWithoutStiffnessAtRestIsAnInputError) {
+  for (const auto& [stress, tangent] : std::vector<std::pair<std::string, std::string>>{
+           {"eps^3", "3*eps^2"}, {"-eps", ""}, {"1/eps", ""}}) {
+    auto p = model("formula");
+    p.set("Stress", stress);
+    p.set("Tangent", tangent);
+    auto m = material(p);
+    auto ps = particlesAt({0.5});
+    try {
+      m->initialize(ps, 0);
+      FAIL() << "no error for " << stress;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.path(), "Materials/m/Stress") << stress;
+    }
+  }
+}
+
+TEST(LinearLaw, StressAndTangentFromF) {
   auto m = linear("2 + x");
   auto ps = particlesAt({0.0, 0.5, 1.0});
   m->initialize(ps, 0);
@@ -46,7 +191,7 @@ TEST(LinearElastic1D, StressAndTangentFromF) {
   EXPECT_DOUBLE_EQ(m->maxModulus(ps, 0), 3.0);
 }
 
-TEST(LinearElastic1D, OnlyItsOwnParticles) {
+TEST(LinearLaw, OnlyItsOwnParticles) {
   auto m = linear("5");
   auto ps = particlesAt({0.0, 1.0});
   auto mat = Kokkos::create_mirror_view(ps.material);
@@ -63,7 +208,7 @@ TEST(LinearElastic1D, OnlyItsOwnParticles) {
   EXPECT_DOUBLE_EQ(Ph(1, 0, 0), -7.0);
 }
 
-TEST(LinearElastic1D, NonPositiveModulusAtAParticleNamesThePath) {
+TEST(LinearLaw, NonPositiveModulusAtAParticleNamesThePath) {
   auto m = linear("1 - 2*x");
   auto ps = particlesAt({0.25, 0.75});
   try {
