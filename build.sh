@@ -74,8 +74,10 @@ case "$cmd" in
   benchmark)
     install_missing "${build_packages[@]}"
     build
-    python3 "$here/test/benchmark/static_bar.py" --impm "$build_dir/drivers/impm" \
-      --write "$here/doc/performance.md"
+    for b in static_bar dynamic_bar nonlinear_bar; do
+      python3 "$here/test/benchmark/$b.py" --impm "$build_dir/drivers/impm" \
+        --write "$here/doc/performance.md"
+    done
     ;;
   *)
     echo "usage: $0 [demo|test|build|benchmark]" >&2

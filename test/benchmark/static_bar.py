@@ -11,18 +11,11 @@ usage: static_bar.py --impm build/drivers/impm [--repeat 3] [--write doc/perform
 """
 
 import argparse
-import csv
-import math
 import os
-import re
-import shutil
-import statistics
-import subprocess
-import tempfile
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from benchlib import ROOT, exponent, median_run, run_impm, write_section
+
 DECK = os.path.join(ROOT, "input", "bar_static_s1.xml")
-BEGIN, END = "<!-- static-bar:begin -->", "<!-- static-bar:end -->"
 
 # GMRES with the two incomplete factorisations that handle the zero diagonal of the Robin
 # rows (MueLu's relaxation smoothers divide by it; see doc/performance.md).
@@ -36,40 +29,9 @@ SOLVE_PHASES = ("particle-grid map", "graph", "residual", "Jacobian", "Newton so
 
 
 def run_once(impm, np, particles, preconditioner):
-    out = tempfile.mkdtemp(prefix="impm-bench-")
-    cmd = ["/usr/bin/time", "-f", "%e %M"]
-    if np > 1:
-        cmd += ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(np)]
-    cmd += [impm, "--output-dir", out]
     sets = ["Grid/Cells={%d}" % (particles // 2), "Discretization/Method=cpdi",
-            "Output/Exodus=false", "Output/CSV=false", "Output/Timers=true",
-            "Solver/Print Iterations=false", "Verification/Maximum RMS Error=0",
-            "Verification/Reaction Tolerance=0"] + PRECONDITIONERS[preconditioner]
-    for s in sets:
-        cmd += ["--set", s]
-    cmd.append(DECK)
-    r = subprocess.run(cmd, capture_output=True, text=True)
-    if r.returncode != 0:
-        raise SystemExit("impm failed:\n" + r.stdout + r.stderr)
-    wall, rss = r.stderr.strip().splitlines()[-1].split()
-    solve = 0.0
-    for phase in SOLVE_PHASES:
-        m = re.search(r"impm: %s\s+([0-9.eE+-]+)" % re.escape(phase), r.stdout)
-        solve += float(m.group(1)) if m else 0.0
-    history = list(csv.DictReader(open(os.path.join(out, "bar_static_s1_history.csv"))))
-    shutil.rmtree(out)
-    return (float(wall), solve, int(rss) / 1024.0, int(history[-1]["newton_iterations"]),
-            int(history[-1]["linear_iterations"]))
-
-
-def exponent(points):
-    """Least-squares slope of log(time) against log(particles)."""
-    if len(points) < 2:
-        return float("nan")
-    xs = [math.log(n) for n, _ in points]
-    ys = [math.log(t) for _, t in points]
-    mx, my = statistics.mean(xs), statistics.mean(ys)
-    return sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sum((x - mx) ** 2 for x in xs)
+            "Verification/Maximum RMS Error=0", "Verification/Reaction Tolerance=0"]
+    return run_impm(impm, DECK, sets + PRECONDITIONERS[preconditioner], np)
 
 
 def main():
@@ -89,12 +51,12 @@ def main():
             walls, solves = [], []
             for n in args.particles:
                 runs = [run_once(args.impm, np, n, preconditioner) for _ in range(args.repeat)]
-                wall = statistics.median(r[0] for r in runs)
-                solve = statistics.median(r[1] for r in runs)
-                rss = max(r[2] for r in runs)
-                newton, belos = runs[0][3], runs[0][4]
-                lines.append("| %d | %d | %s | %.2f | %.3f | %.0f | %d | %d |"
-                             % (n, np, preconditioner, wall, solve, rss, newton, belos))
+                wall = median_run(runs, lambda r: r.wall)
+                solve = median_run(runs, lambda r: sum(r.timer(t) for t in SOLVE_PHASES))
+                last = runs[0].history[-1]
+                lines.append("| %d | %d | %s | %.2f | %.3f | %.0f | %s | %s |"
+                             % (n, np, preconditioner, wall, solve, max(r.memory for r in runs),
+                                last["newton_iterations"], last["linear_iterations"]))
                 print(lines[-1], flush=True)
                 walls.append((n, wall))
                 solves.append((n, solve))
@@ -107,9 +69,7 @@ def main():
     text = "\n".join(lines) + "\n\nScaling exponents (least-squares fit of log time against log N):\n\n" + \
         "\n".join(fits) + "\n"
     if args.write:
-        doc = open(args.write).read()
-        start, end = doc.index(BEGIN) + len(BEGIN), doc.index(END)
-        open(args.write, "w").write(doc[:start] + "\n" + text + doc[end:])
+        write_section(args.write, "static-bar", text)
 
 
 if __name__ == "__main__":

@@ -1,0 +1,86 @@
+"""Shared pieces of the benchmarks: run impm once and collect what it reports, fit scaling
+exponents, and replace a marked section of doc/performance.md."""
+
+import csv
+import math
+import os
+import re
+import shutil
+import statistics
+import subprocess
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+class Run:
+    """One impm process: wall time [s], peak memory of the largest process [MB], the Teuchos
+    timers by name [s] and the rows of the history CSV."""
+
+    def __init__(self, wall, memory, timers, history):
+        self.wall, self.memory, self.timers, self.history = wall, memory, timers, history
+
+    def timer(self, name):
+        return self.timers.get(name, 0.0)
+
+
+def run_impm(impm, deck, sets, np=1, history=True, timeout=None):
+    """Runs impm on deck with the --set overrides (output files off except the history CSV
+    and timers on); raises SystemExit with impm's output when it fails.  Returns None when
+    the run takes longer than timeout seconds (and stops it)."""
+    out = tempfile.mkdtemp(prefix="impm-bench-")
+    cmd = ["/usr/bin/time", "-f", "%e %M"]  # elapsed, peak resident memory [KB]
+    if np > 1:
+        cmd += ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(np)]
+    cmd += [impm, "--output-dir", out]
+    base = ["Output/Exodus=false", "Output/CSV=%s" % ("true" if history else "false"),
+            "Output/Timers=true", "Solver/Print Iterations=false"]
+    for s in base + list(sets):
+        cmd += ["--set", s]
+    cmd.append(deck)
+    start = time.perf_counter()  # /usr/bin/time's %e has a resolution of 10 ms
+    try:
+        r = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        shutil.rmtree(out, ignore_errors=True)
+        return None
+    wall = time.perf_counter() - start
+    if r.returncode != 0:
+        shutil.rmtree(out, ignore_errors=True)
+        raise SystemExit("impm failed: %s\n%s%s" % (" ".join(cmd), r.stdout, r.stderr))
+    rss = r.stderr.strip().splitlines()[-1].split()[1]
+    timers = {}
+    for m in re.finditer(r"^impm: ([A-Za-z -]+?)\s+([0-9.eE+-]+ \(.*)$", r.stdout, re.M):
+        # One rank: "time (calls)"; several: min, mean, max over ranks, then the mean over
+        # call counts.  The slowest rank's time is the one that counts.
+        values = re.findall(r"([0-9.eE+-]+) \(", m.group(2))
+        timers[m.group(1)] = float(values[2] if len(values) >= 3 else values[0])
+    rows = []
+    if history:
+        name = os.path.splitext(os.path.basename(deck))[0] + "_history.csv"
+        rows = list(csv.DictReader(open(os.path.join(out, name))))
+    shutil.rmtree(out)
+    return Run(wall, int(rss) / 1024.0, timers, rows)
+
+
+def median_run(runs, key):
+    return statistics.median(key(r) for r in runs)
+
+
+def exponent(points):
+    """Least-squares slope of log(time) against log(N) for points (N, time)."""
+    if len(points) < 2:
+        return float("nan")
+    xs = [math.log(n) for n, _ in points]
+    ys = [math.log(t) for _, t in points]
+    mx, my = statistics.mean(xs), statistics.mean(ys)
+    return sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sum((x - mx) ** 2 for x in xs)
+
+
+def write_section(path, name, text):
+    """Replaces the text between <!-- name:begin --> and <!-- name:end --> in path."""
+    begin, end = "<!-- %s:begin -->" % name, "<!-- %s:end -->" % name
+    doc = open(path).read()
+    start, stop = doc.index(begin) + len(begin), doc.index(end)
+    open(path, "w").write(doc[:start] + "\n" + text + doc[stop:])
