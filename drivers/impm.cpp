@@ -116,9 +116,12 @@ int main(int argc, char** argv) {
     Teuchos::ParameterList deck;
     impm::collectively(*comm, [&] { deck = impm::loadDeck(args.deck, args.overrides, valid); });
     const auto dim = deck.sublist("Grid").get<Teuchos::Array<int>>("Cells").size();
-    if (dim != 1)
-      throw impm::InputError("Grid/Cells", "only 1-D grids are implemented");
-    return runDeck<1>(deck, args, comm);
+    if (dim == 1)
+      return runDeck<1>(deck, args, comm);
+    if (dim == 2)
+      return runDeck<2>(deck, args, comm);
+    throw impm::InputError("Grid/Cells",
+                           "has " + std::to_string(dim) + " entries; impm runs 1-D and 2-D grids");
   } catch (const impm::InputError& e) {
     if (root)
       std::cerr << "impm: error: " << args.deck << ": " << e.what() << "\n";

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "app/Shape.hpp"
 #include "basis/Method.hpp"
 #include "core/Decomposition.hpp"
 #include "core/Formula.hpp"
@@ -20,17 +21,20 @@ namespace impm {
 
 Teuchos::ParameterList bodyValidParameters();
 
+// Vector quantities have one formula per component (2-D: x and y).  Formula variables:
+// 1-D x, X, t; 2-D x, y, X, Y, t (current and reference position, time).
 struct Body {
   std::string name;
-  int material = 0;    // index into the deck's Materials
+  int material = 0;  // index into the deck's Materials
+  Shape shape;
   double lower = 0.0;  // 1-D: the interval [lower, upper]
   double upper = 0.0;
   int particlesPerCell = 2;
-  Formula section;       // A(x)
-  Formula load;          // distributed load f(x, X, t), per unit length
-  Formula bodyForce;     // body force b(x, X, t), per unit mass
-  Formula velocity;      // initial velocity v(x, X)
-  Formula displacement;  // initial displacement u0(X)
+  Formula section;                      // 1-D: A(x); 2-D: 1 (plane strain, unit thickness)
+  Formula load;                         // 1-D distributed load f(x, X, t), per unit length
+  std::array<Formula, 2> bodyForce;     // body force b(x, X, t), per unit mass
+  std::array<Formula, 2> velocity;      // initial velocity v(x, X)
+  std::array<Formula, 2> displacement;  // initial displacement u0(X)
 };
 
 template <int Dim>

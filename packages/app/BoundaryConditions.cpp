@@ -1,5 +1,7 @@
 #include "app/BoundaryConditions.hpp"
 
+#include "app/TimeIntegration.hpp"
+#include "bc/DirichletNodes.hpp"
 #include "bc/RobinEnd.hpp"
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
@@ -8,36 +10,66 @@ namespace impm {
 
 Teuchos::ParameterList boundaryConditionValidParameters() {
   Teuchos::ParameterList valid;
-  declareChoice(valid, "Type", "Robin", {"Robin"},
-                "Robin: alpha F + beta u = gamma at an end of a 1-D body (primer eq. 1.1)", true);
+  declareChoice(valid, "Type", "Robin", {"Robin", "Dirichlet"},
+                "Robin: alpha F + beta u = gamma at an end of a 1-D body (primer eq. 1.1); "
+                "Dirichlet: a prescribed displacement component on grid nodes (rollers, "
+                "clamps, platens)",
+                true);
   valid.sublist("[Type=Robin]").setParameters(RobinEnd::validParameters());
+  valid.sublist("[Type=Dirichlet]").setParameters(DirichletNodes<2>::validParameters());
   return valid;
 }
 
-template <>
-std::vector<std::shared_ptr<Contribution<1>>> createBoundaryConditions<1>(
-    const Teuchos::ParameterList& deck, const Bodies<1>& bodies, Kinematics kinematics) {
-  std::vector<std::shared_ptr<Contribution<1>>> result;
+namespace {
+
+// A Robin end of a 1-D body; each end takes one condition.
+std::shared_ptr<Contribution<1>> robinEnd(const std::string& name, const Teuchos::ParameterList& p,
+                                          const Bodies<1>& bodies, Kinematics kinematics,
+                                          std::vector<std::string>& taken) {
+  const std::string path = "Boundary Conditions/" + name;
+  const int b = bodies.find(p.get<std::string>("Body"));
+  if (b < 0)
+    throw InputError(path + "/Body", "no body called '" + p.get<std::string>("Body") + "'");
+  const std::string end = p.get<std::string>("Body") + "/" + p.get<std::string>("End");
+  for (const auto& t : taken)
+    if (t == end)
+      throw InputError(path + "/End", "that end of body '" + p.get<std::string>("Body") +
+                                          "' already has a boundary condition");
+  taken.push_back(end);
+  const Body& body = bodies.list()[b];
+  const double at = p.get<std::string>("End") == "left" ? body.lower : body.upper;
+  return std::make_shared<RobinEnd>(name, p, at, kinematics);
+}
+
+}  // namespace
+
+template <int Dim>
+std::vector<std::shared_ptr<Contribution<Dim>>> createBoundaryConditions(
+    const Teuchos::ParameterList& deck, const Bodies<Dim>& bodies, const GridGeometry<Dim>& grid,
+    Kinematics kinematics) {
+  std::vector<std::shared_ptr<Contribution<Dim>>> result;
   const auto& list = deck.sublist("Boundary Conditions");
+  const double initialLoad = isStatic(deck.sublist("Time Integration")) ? 0.0 : 1.0;
   std::vector<std::string> taken;
   for (auto it = list.begin(); it != list.end(); ++it) {
     const std::string& name = list.name(it);
     const auto& p = list.sublist(name);
-    const std::string path = "Boundary Conditions/" + name;
-    const int b = bodies.find(p.get<std::string>("Body"));
-    if (b < 0)
-      throw InputError(path + "/Body", "no body called '" + p.get<std::string>("Body") + "'");
-    const std::string end = p.get<std::string>("Body") + "/" + p.get<std::string>("End");
-    for (const auto& t : taken)
-      if (t == end)
-        throw InputError(path + "/End", "that end of body '" + p.get<std::string>("Body") +
-                                            "' already has a boundary condition");
-    taken.push_back(end);
-    const Body& body = bodies.list()[b];
-    const double at = p.get<std::string>("End") == "left" ? body.lower : body.upper;
-    result.push_back(std::make_shared<RobinEnd>(name, p, at, kinematics));
+    if (p.get<std::string>("Type") == "Dirichlet") {
+      result.push_back(std::make_shared<DirichletNodes<Dim>>(name, p, grid, initialLoad));
+      continue;
+    }
+    if constexpr (Dim == 1)
+      result.push_back(robinEnd(name, p, bodies, kinematics, taken));
+    else
+      throw InputError("Boundary Conditions/" + name + "/Type",
+                       "Robin ends are for 1-D bars; use Dirichlet on a 2-D grid");
   }
   return result;
 }
+
+template std::vector<std::shared_ptr<Contribution<1>>> createBoundaryConditions<1>(
+    const Teuchos::ParameterList&, const Bodies<1>&, const GridGeometry<1>&, Kinematics);
+template std::vector<std::shared_ptr<Contribution<2>>> createBoundaryConditions<2>(
+    const Teuchos::ParameterList&, const Bodies<2>&, const GridGeometry<2>&, Kinematics);
 
 }  // namespace impm

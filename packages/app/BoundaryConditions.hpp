@@ -16,6 +16,7 @@ Teuchos::ParameterList boundaryConditionValidParameters();
 
 template <int Dim>
 std::vector<std::shared_ptr<Contribution<Dim>>> createBoundaryConditions(
-    const Teuchos::ParameterList& deck, const Bodies<Dim>& bodies, Kinematics kinematics);
+    const Teuchos::ParameterList& deck, const Bodies<Dim>& bodies, const GridGeometry<Dim>& grid,
+    Kinematics kinematics);
 
 }  // namespace impm

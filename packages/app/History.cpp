@@ -20,9 +20,15 @@ History<Dim>::History(const std::vector<std::string>& bodyNames) : bodies_(bodyN
               "external_work",
               "energy_balance",
               "momentum"};
-  for (const auto& b : bodyNames)
+  if (Dim == 2)
+    columns_.push_back("momentum_y");
+  for (const auto& b : bodyNames) {
     for (const char* c : {"v_cm_", "x_min_", "x_max_"})
       columns_.push_back(c + b);
+    if (Dim == 2)
+      for (const char* c : {"vy_cm_", "y_min_", "y_max_"})
+        columns_.push_back(c + b);
+  }
   for (const char* c : {"newton_iterations", "linear_iterations", "residual", "attempts"})
     columns_.push_back(c);
 }
@@ -30,38 +36,58 @@ History<Dim>::History(const std::vector<std::string>& bodyNames) : bodies_(bodyN
 template <int Dim>
 std::vector<double> History<Dim>::row(const StepRecord& r, double F0, double FL,
                                       const ParticleSet<Dim>& particles, const Comm& comm) const {
-  // Per body: mass, momentum (first component), smallest and largest position.
+  // Per body: mass, momentum, smallest and largest position, per component.
   const double inf = std::numeric_limits<double>::infinity();
-  std::vector<double> sums(2 * bodies_, 0.0), lows(bodies_, inf), highs(bodies_, -inf);
+  const std::size_t n = bodies_ * Dim;
+  std::vector<double> mass(bodies_, 0.0), sums(n, 0.0), lows(n, inf), highs(n, -inf);
   auto body = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.body);
   auto m = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.mass);
   auto v = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.v);
   auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.x);
   for (std::size_t p = 0; p < particles.size(); ++p) {
     const int b = body(p);
-    sums[2 * b] += m(p);
-    sums[2 * b + 1] += m(p) * v(p, 0);
-    lows[b] = std::min(lows[b], x(p, 0));
-    highs[b] = std::max(highs[b], x(p, 0));
+    mass[b] += m(p);
+    for (int d = 0; d < Dim; ++d) {
+      const std::size_t k = b * Dim + d;
+      sums[k] += m(p) * v(p, d);
+      lows[k] = std::min(lows[k], x(p, d));
+      highs[k] = std::max(highs[k], x(p, d));
+    }
   }
-  std::vector<double> gsums(sums.size()), glows(bodies_), ghighs(bodies_);
-  const int n = static_cast<int>(bodies_);
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 2 * n, sums.data(), gsums.data());
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, n, lows.data(), glows.data());
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, n, highs.data(), ghighs.data());
+  std::vector<double> gmass(bodies_), gsums(n), glows(n), ghighs(n);
+  const int count = static_cast<int>(n);
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, static_cast<int>(bodies_), mass.data(),
+                     gmass.data());
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, count, sums.data(), gsums.data());
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, count, lows.data(), glows.data());
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, count, highs.data(), ghighs.data());
 
-  double momentum = 0.0;
+  double momentum[Dim] = {};
   for (std::size_t b = 0; b < bodies_; ++b)
-    momentum += gsums[2 * b + 1];
+    for (int d = 0; d < Dim; ++d)
+      momentum[d] += gsums[b * Dim + d];
   const double total = r.kineticEnergy + r.strainEnergy;
-  std::vector<double> row = {
-      double(r.step), r.time, r.dt,           r.loadFactor,           F0,      FL, r.kineticEnergy,
-      r.strainEnergy, total,  r.externalWork, total - r.externalWork, momentum};
-  for (std::size_t b = 0; b < bodies_; ++b) {
-    row.push_back(gsums[2 * b] > 0 ? gsums[2 * b + 1] / gsums[2 * b] : 0.0);
-    row.push_back(glows[b]);
-    row.push_back(ghighs[b]);
-  }
+  std::vector<double> row = {double(r.step),
+                             r.time,
+                             r.dt,
+                             r.loadFactor,
+                             F0,
+                             FL,
+                             r.kineticEnergy,
+                             r.strainEnergy,
+                             total,
+                             r.externalWork,
+                             total - r.externalWork,
+                             momentum[0]};
+  if (Dim == 2)
+    row.push_back(momentum[Dim - 1]);
+  for (std::size_t b = 0; b < bodies_; ++b)
+    for (int d = 0; d < Dim; ++d) {
+      const std::size_t k = b * Dim + d;
+      row.push_back(gmass[b] > 0 ? gsums[k] / gmass[b] : 0.0);
+      row.push_back(glows[k]);
+      row.push_back(ghighs[k]);
+    }
   const double residual = r.newton.residualNorms.empty() ? 0.0 : r.newton.residualNorms.back();
   for (double c : {double(r.newton.iterations()), double(r.newton.totalLinearIterations()),
                    residual, double(r.attempts)})
@@ -70,5 +96,6 @@ std::vector<double> History<Dim>::row(const StepRecord& r, double F0, double FL,
 }
 
 template class History<1>;
+template class History<2>;
 
 }  // namespace impm

@@ -45,14 +45,17 @@ struct Mirrors {
         a(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.a)),
         F(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.F)),
         stress(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.stress)),
+        domain(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.domain)),
+        domain0(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.domain0)),
+        stressZZ(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.stressZZ)),
         volume(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.volume)),
         mass(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.mass)),
         section(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.section)) {}
   typename Kokkos::View<GlobalId*>::HostMirror id;
   typename Kokkos::View<int*>::HostMirror body;
   typename ParticleSet<Dim>::Vectors::HostMirror X, x, u, v, a;
-  typename ParticleSet<Dim>::Tensors::HostMirror F, stress;
-  typename ParticleSet<Dim>::Scalars::HostMirror volume, mass, section;
+  typename ParticleSet<Dim>::Tensors::HostMirror F, stress, domain, domain0;
+  typename ParticleSet<Dim>::Scalars::HostMirror stressZZ, volume, mass, section;
 };
 
 template <int Dim>
@@ -64,9 +67,11 @@ struct Column {
 // 1-D: id,X,x,u,strain,stress,volume,v,a,mass,section,body.  X is the Exodus coordinate and
 // u its nodal displacementX, so neither is an element variable.
 template <int Dim>
-std::vector<Column<Dim>> particleColumns() {
-  static_assert(Dim == 1, "2-D output is not implemented yet");
-  using M = Mirrors<Dim>;
+std::vector<Column<Dim>> particleColumns();
+
+template <>
+std::vector<Column<1>> particleColumns<1>() {
+  using M = Mirrors<1>;
   return {
       {"id", "", [](const M& m, std::size_t p) { return double(m.id(p)); }},
       {"X", "", [](const M& m, std::size_t p) { return m.X(p, 0); }},
@@ -81,6 +86,53 @@ std::vector<Column<Dim>> particleColumns() {
       {"section", "section", [](const M& m, std::size_t p) { return m.section(p); }},
       {"body", "body", [](const M& m, std::size_t p) { return double(m.body(p)); }},
   };
+}
+
+// 2-D: id,X,Y,x,y,u_x,u_y,stress_xx,stress_yy,stress_xy,stress_zz,J,volume, then velocity,
+// acceleration, F, mass, body and the domain half-vectors r1, r2 (columns of F r0) and their
+// reference values r01, r02.
+template <>
+std::vector<Column<2>> particleColumns<2>() {
+  using M = Mirrors<2>;
+  std::vector<Column<2>> c = {
+      {"id", "", [](const M& m, std::size_t p) { return double(m.id(p)); }},
+      {"X", "", [](const M& m, std::size_t p) { return m.X(p, 0); }},
+      {"Y", "", [](const M& m, std::size_t p) { return m.X(p, 1); }},
+      {"x", "", [](const M& m, std::size_t p) { return m.x(p, 0); }},
+      {"y", "", [](const M& m, std::size_t p) { return m.x(p, 1); }},
+      {"u_x", "", [](const M& m, std::size_t p) { return m.u(p, 0); }},
+      {"u_y", "", [](const M& m, std::size_t p) { return m.u(p, 1); }},
+      {"stress_xx", "stress_xx", [](const M& m, std::size_t p) { return m.stress(p, 0, 0); }},
+      {"stress_yy", "stress_yy", [](const M& m, std::size_t p) { return m.stress(p, 1, 1); }},
+      {"stress_xy", "stress_xy", [](const M& m, std::size_t p) { return m.stress(p, 0, 1); }},
+      {"stress_zz", "stress_zz", [](const M& m, std::size_t p) { return m.stressZZ(p); }},
+      {"J", "J",
+       [](const M& m, std::size_t p) {
+         return m.F(p, 0, 0) * m.F(p, 1, 1) - m.F(p, 0, 1) * m.F(p, 1, 0);
+       }},
+      {"volume", "volume", [](const M& m, std::size_t p) { return m.volume(p); }},
+      {"v_x", "velocityX", [](const M& m, std::size_t p) { return m.v(p, 0); }},
+      {"v_y", "velocityY", [](const M& m, std::size_t p) { return m.v(p, 1); }},
+      {"a_x", "accelerationX", [](const M& m, std::size_t p) { return m.a(p, 0); }},
+      {"a_y", "accelerationY", [](const M& m, std::size_t p) { return m.a(p, 1); }},
+  };
+  const char* const xy = "xy";
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b) {
+      const std::string name = std::string("F_") + xy[a] + xy[b];
+      c.push_back({name, name, [a, b](const M& m, std::size_t p) { return m.F(p, a, b); }});
+    }
+  c.push_back({"mass", "mass", [](const M& m, std::size_t p) { return m.mass(p); }});
+  c.push_back({"body", "body", [](const M& m, std::size_t p) { return double(m.body(p)); }});
+  for (const char* r : {"r1_", "r2_", "r01_", "r02_"})
+    for (int a = 0; a < 2; ++a) {
+      const int k = r[1] == '0' ? r[2] - '1' : r[1] - '1';
+      const bool reference = r[1] == '0';
+      c.push_back({std::string(r) + xy[a], "", [a, k, reference](const M& m, std::size_t p) {
+                     return reference ? m.domain0(p, a, k) : m.domain(p, a, k);
+                   }});
+    }
+  return c;
 }
 
 // A map with every index 0..n-1 on rank 0 and nothing elsewhere.
@@ -150,8 +202,9 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
                     const ParticleSet<Dim>& particles, GlobalId totalParticles,
                     const std::vector<std::string>& historyColumns,
                     const std::vector<std::string>& gridFieldNames,
-                    const std::vector<std::string>& globalNames)
+                    const std::vector<std::string>& globalNames, Domains domains)
     : ownership_(ownership),
+      domains_(domains),
       root_(ownership.comm()->getRank() == 0),
       every_(params.get<int>("Every")),
       exodus_(params.get<bool>("Exodus")),
@@ -182,25 +235,89 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
     for (int d = 0; d < Dim; ++d)
       grid.coords[d].push_back(g.nodeCoord(d, idx[d]));
   }
-  grid.elementType = "BAR2";
-  grid.nodesPerElement = 2;
-  for (int c = 0; c < g.cells[0]; ++c)
-    grid.connectivity.push_back(c + 1), grid.connectivity.push_back(c + 2);
+  grid.elementType = Dim == 1 ? "BAR2" : "QUAD4";
+  grid.nodesPerElement = 1 << Dim;
+  for (GlobalId cell = 0; cell < g.numCells(); ++cell) {
+    int idx[Dim];
+    g.cellIndex(cell, idx);
+    for (int k = 0; k < grid.nodesPerElement; ++k) {  // counter-clockwise in 2-D
+      int corner[Dim];
+      corner[0] = idx[0] + ((k == 1 || k == 2) ? 1 : 0);
+      if constexpr (Dim == 2)
+        corner[1] = idx[1] + (k >= 2 ? 1 : 0);
+      grid.connectivity.push_back(static_cast<int>(g.nodeId(corner) + 1));
+    }
+  }
   gridFile_ = std::make_unique<ExodusFile>(base + "_grid.exo", "impm grid", grid, gridFieldNames,
                                            std::vector<std::string>{}, globalNames);
 
   ExodusMesh points;
   points.dimension = Dim;
-  points.coords = {table.column("X")};
+  for (const char* X : {"X", "Y"}) {
+    if (static_cast<int>(points.coords.size()) < Dim)
+      points.coords.push_back(table.column(X));
+  }
   points.elementType = "SPHERE";
   points.nodesPerElement = 1;
   for (GlobalId p = 0; p < totalParticles; ++p) {
     points.connectivity.push_back(static_cast<int>(p + 1));
     points.elementIds.push_back(static_cast<int>(p + 1));
   }
+  const std::vector<std::string> displacement = {"displacementX", "displacementY"};
+  const std::vector<std::string> nodal(displacement.begin(), displacement.begin() + Dim);
   particleFile_ = std::make_unique<ExodusFile>(base + "_particles.exo", "impm particles", points,
-                                               std::vector<std::string>{"displacementX"},
+                                               nodal, exodusElementVariables<Dim>(), globalNames);
+  if (Dim == 2 && domains_ != Domains::none)
+    domainFile_ = std::make_unique<ExodusFile>(base + "_domains.exo", "impm particle domains",
+                                               domainMesh(table), nodal,
                                                exodusElementVariables<Dim>(), globalNames);
+}
+
+template <int Dim>
+std::vector<std::array<double, 2>> Output<Dim>::corners(const ParticleTable& table, std::size_t p,
+                                                        bool reference) const {
+  // Counter-clockwise: (-,-), (+,-), (+,+), (-,+) in the half-vectors r1, r2.
+  const std::string r = reference ? "r0" : "r";
+  const double cx = table.column(reference ? "X" : "x")[p];
+  const double cy = table.column(reference ? "Y" : "y")[p];
+  double r1[2] = {table.column(r + "1_x")[p], table.column(r + "1_y")[p]};
+  double r2[2] = {table.column(r + "2_x")[p], table.column(r + "2_y")[p]};
+  if (domains_ == Domains::box)  // gimp integrates over the box of half-widths r1_x, r2_y
+    r1[1] = 0.0, r2[0] = 0.0;
+  std::vector<std::array<double, 2>> out;
+  for (const auto& s : {std::array<double, 2>{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
+    out.push_back({cx + s[0] * r1[0] + s[1] * r2[0], cy + s[0] * r1[1] + s[1] * r2[1]});
+  return out;
+}
+
+template <int Dim>
+ExodusMesh Output<Dim>::domainMesh(const ParticleTable& table) const {
+  ExodusMesh mesh;
+  mesh.dimension = 2;
+  mesh.coords.resize(2);
+  mesh.elementType = "QUAD4";
+  mesh.nodesPerElement = 4;
+  for (GlobalId p = 0; p < totalParticles_; ++p) {
+    for (const auto& c : corners(table, p, true)) {
+      mesh.coords[0].push_back(c[0]), mesh.coords[1].push_back(c[1]);
+      mesh.connectivity.push_back(static_cast<int>(mesh.coords[0].size()));
+    }
+    mesh.elementIds.push_back(static_cast<int>(p + 1));
+  }
+  return mesh;
+}
+
+template <int Dim>
+std::vector<std::vector<double>> Output<Dim>::domainDisplacements(
+    const ParticleTable& table) const {
+  std::vector<std::vector<double>> u(2);
+  for (GlobalId p = 0; p < totalParticles_; ++p) {
+    const auto now = corners(table, p, false), then = corners(table, p, true);
+    for (int k = 0; k < 4; ++k)
+      for (int d = 0; d < 2; ++d)
+        u[d].push_back(now[k][d] - then[k][d]);
+  }
+  return u;
 }
 
 template <int Dim>
@@ -217,7 +334,14 @@ void Output<Dim>::writeFields(double time, const ParticleSet<Dim>& particles,
   if (!exodus_)
     return;
   gridFile_->append(time, columnsOf(gridOnRoot, gridFields_), {}, globals);
-  particleFile_->append(time, {table.column("u")}, exodusElementValues<Dim>(table), globals);
+  const auto elements = exodusElementValues<Dim>(table);
+  if constexpr (Dim == 1) {
+    particleFile_->append(time, {table.column("u")}, elements, globals);
+  } else {
+    particleFile_->append(time, {table.column("u_x"), table.column("u_y")}, elements, globals);
+    if (domainFile_)
+      domainFile_->append(time, domainDisplacements(table), elements, globals);
+  }
 }
 
 template <int Dim>
@@ -234,11 +358,16 @@ std::vector<std::string> Output<Dim>::files() const {
     out.push_back(base + "_particles.csv");
   if (exodus_)
     out.push_back(base + "_grid.exo"), out.push_back(base + "_particles.exo");
+  if (domainFile_)
+    out.push_back(base + "_domains.exo");
   return out;
 }
 
 template ParticleTable gatherParticles<1>(const ParticleSet<1>&, const Teuchos::RCP<const Comm>&,
                                           GlobalId);
+template ParticleTable gatherParticles<2>(const ParticleSet<2>&, const Teuchos::RCP<const Comm>&,
+                                          GlobalId);
 template class Output<1>;
+template class Output<2>;
 
 }  // namespace impm

@@ -5,11 +5,15 @@
 //  <prefix>_particles.exo  one SPHERE element per particle at its reference position, with
 //                          displacementX... as nodal fields (ParaView moves the points) and
 //                          the other particle fields as element variables
+//  <prefix>_domains.exo    2-D gimp and cpdi: each particle's domain as a QUAD4 cell at its
+//                          reference corners, with the corners' displacementX, Y as nodal
+//                          fields (ParaView's Warp By Vector draws the deformed domains)
 //  <prefix>_particles.csv  the particles at the last output step, sorted by id
 //  <prefix>_history.csv    one row per step
 
 #include <Teuchos_ParameterList.hpp>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <string>
@@ -37,13 +41,16 @@ ParticleTable gatherParticles(const ParticleSet<Dim>& particles,
 template <int Dim>
 class Output {
  public:
+  // The particle domains to draw: none, the box of half-widths r1_x, r2_y (gimp), the
+  // parallelogram spanned by r1, r2 (cpdi).
+  enum class Domains { none, box, parallelogram };
   // Creates the directory and the files (rank 0).  Collective.
   Output(const Teuchos::ParameterList& params, const std::string& directory,
          const std::string& prefix, const NodeOwnership<Dim>& ownership,
          const ParticleSet<Dim>& particles, GlobalId totalParticles,
          const std::vector<std::string>& historyColumns,
          const std::vector<std::string>& gridFieldNames,
-         const std::vector<std::string>& globalNames);
+         const std::vector<std::string>& globalNames, Domains domains = Domains::none);
 
   bool due(int step) const { return step % every_ == 0; }
   // Particle and grid fields at `time`.  gridFields: the named columns on the node map.
@@ -55,14 +62,20 @@ class Output {
   std::vector<std::string> files() const;
 
  private:
+  std::vector<std::array<double, 2>> corners(const ParticleTable& table, std::size_t p,
+                                             bool reference) const;
+  ExodusMesh domainMesh(const ParticleTable& table) const;
+  std::vector<std::vector<double>> domainDisplacements(const ParticleTable& table) const;
+
   const NodeOwnership<Dim>& ownership_;
+  Domains domains_;
   bool root_;
   int every_;
   bool exodus_, csv_;
   GlobalId totalParticles_;
   std::size_t gridFields_;
   std::string directory_, prefix_;
-  std::unique_ptr<ExodusFile> gridFile_, particleFile_;
+  std::unique_ptr<ExodusFile> gridFile_, particleFile_, domainFile_;
   std::unique_ptr<CsvHistory> history_;
 };
 

@@ -114,15 +114,17 @@ void Simulation<Dim>::setUp(const Teuchos::ParameterList& deck) {
                                         materials_, kinematics_ == Kinematics::updatedLagrangian);
   for (std::size_t m = 0; m < materials_.size(); ++m)
     materials_[m]->initialize(particles_, static_cast<int>(m));
-  conditions_ = createBoundaryConditions<Dim>(deck, *bodies_, kinematics_);
-  for (const auto& c : conditions_) {
-    auto robin = std::dynamic_pointer_cast<RobinEnd>(c);
-    if (!robin)
-      continue;
-    if (robin->isLeft() && !left_)
-      left_ = robin;
-    if (!robin->isLeft() && !right_)
-      right_ = robin;
+  conditions_ = createBoundaryConditions<Dim>(deck, *bodies_, grid, kinematics_);
+  if constexpr (Dim == 1) {
+    for (const auto& c : conditions_) {
+      auto robin = std::dynamic_pointer_cast<RobinEnd>(c);
+      if (!robin)
+        continue;
+      if (robin->isLeft() && !left_)
+        left_ = robin;
+      if (!robin->isLeft() && !right_)
+        right_ = robin;
+    }
   }
   verification_ = std::make_unique<Verification>(deck.sublist("Verification"));
 }
@@ -151,6 +153,13 @@ void Simulation<Dim>::checkExplicitTimeStep() const {
 }
 
 template <int Dim>
+void Simulation<Dim>::updateOutOfPlaneStress() {
+  for (std::size_t m = 0; m < materials_.size(); ++m)
+    materials_[m]->outOfPlaneStress(particles_, particles_.F, static_cast<int>(m),
+                                    particles_.stressZZ);
+}
+
+template <int Dim>
 std::vector<double> Simulation<Dim>::reactions() const {
   const double none = std::numeric_limits<double>::quiet_NaN();
   return {left_ ? left_->force() : none, right_ ? right_->force() : none};
@@ -165,8 +174,11 @@ void Simulation<Dim>::printHeader() const {
   std::cout << "impm: " << deckFile_ << ": " << Dim << "-D, " << methodName(method_) << ", "
             << (kinematics_ == Kinematics::totalLagrangian ? "total" : "updated") << " Lagrangian, "
             << ti.get<std::string>("Type") << ", " << totalParticles_ << " integration points, "
-            << grid.cells[0] << " cells, " << comm_->getSize() << " rank"
-            << (comm_->getSize() > 1 ? "s" : "") << "\n";
+            << grid.cells[0];
+  for (int d = 1; d < Dim; ++d)
+    std::cout << " x " << grid.cells[d];
+  std::cout << " cells, " << comm_->getSize() << " rank" << (comm_->getSize() > 1 ? "s" : "")
+            << "\n";
 }
 
 template <int Dim>
@@ -201,10 +213,16 @@ std::vector<std::string> Simulation<Dim>::run() {
   GridFields<Dim> grid(*ownership_, !dynamic || kinematics_ == Kinematics::totalLagrangian,
                        dynamic);
   std::unique_ptr<Output<Dim>> output;
+  using Domains = typename Output<Dim>::Domains;
+  const Domains domains = method_ == Method::cpdi   ? Domains::parallelogram
+                          : method_ == Method::gimp ? Domains::box
+                                                    : Domains::none;
+  updateOutOfPlaneStress();
   collectively(*comm_, [&] {
-    output = std::make_unique<Output<Dim>>(
-        deck_.sublist("Output"), outputDirectory_, prefix_, *ownership_, particles_,
-        totalParticles_, history.columns(), grid.names(), std::vector<std::string>{"F0", "FL"});
+    output =
+        std::make_unique<Output<Dim>>(deck_.sublist("Output"), outputDirectory_, prefix_,
+                                      *ownership_, particles_, totalParticles_, history.columns(),
+                                      grid.names(), std::vector<std::string>{"F0", "FL"}, domains);
   });
   StepRecord initial;
   initial.kineticEnergy = kineticEnergy<Dim>(particles_, *comm_);
@@ -217,6 +235,7 @@ std::vector<std::string> Simulation<Dim>::run() {
   double finalTime = 0.0;
   const StepCallback<Dim> onStep = [&](const StepRecord& r, const StepGrid<Dim>& step) {
     grid.update(step);
+    updateOutOfPlaneStress();
     const auto F = reactions();
     output->appendHistory(history.row(r, F[0], F[1], particles_, *comm_));
     printProgress(r, F);
@@ -271,5 +290,6 @@ std::vector<std::string> Simulation<Dim>::finish(double finalTime,
 }
 
 template class Simulation<1>;
+template class Simulation<2>;
 
 }  // namespace impm

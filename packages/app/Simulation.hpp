@@ -39,6 +39,7 @@ class Simulation {
   void setUp(const Teuchos::ParameterList& deck);
   void checkExplicitTimeStep() const;
   std::vector<double> reactions() const;
+  void updateOutOfPlaneStress();
   void printHeader() const;
   void printProgress(const StepRecord& record, const std::vector<double>& F) const;
   std::vector<std::string> finish(double finalTime, const std::vector<std::string>& files) const;

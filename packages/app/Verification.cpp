@@ -16,7 +16,12 @@ Teuchos::ParameterList verificationValidParameters() {
   Teuchos::ParameterList valid;
   declareString(valid, "Exact Displacement", "",
                 "Exact displacement u(X, t), a formula of the reference position X and time t; "
-                "when given, the particle RMS error is measured and reported");
+                "when given, the particle RMS error is measured and reported (1-D)");
+  for (const char* c : {"x", "y"})
+    declareString(valid, std::string("Exact Displacement ") + c, "",
+                  std::string("2-D: ") + c +
+                      " component of the exact displacement, a formula "
+                      "of the reference position X, Y and time t (both components, or neither)");
   declareDouble(valid, "Maximum RMS Error", 0.0,
                 "Fail the run when the RMS displacement error exceeds this (0: no check)",
                 Bounds::nonNegative());
@@ -30,16 +35,28 @@ Teuchos::ParameterList verificationValidParameters() {
 }
 
 Verification::Verification(const Teuchos::ParameterList& params)
-    : hasExact_(!params.get<std::string>("Exact Displacement").empty()),
+    : hasExact_(!params.get<std::string>("Exact Displacement").empty() ||
+                !params.get<std::string>("Exact Displacement x").empty() ||
+                !params.get<std::string>("Exact Displacement y").empty()),
       maxRms_(params.get<double>("Maximum RMS Error")),
       expectedF0_(params.get<double>("Expected F0")),
       expectedFL_(params.get<double>("Expected FL")),
       reactionTolerance_(params.get<double>("Reaction Tolerance")) {
-  if (hasExact_) {
+  const auto read = [&](const std::string& name, const std::vector<std::string>& vars) {
     try {
-      exact_ = Formula(params.get<std::string>("Exact Displacement"), {"X", "t"});
+      return Formula(params.get<std::string>(name), vars);
     } catch (const InputError& e) {
-      throw InputError("Verification/Exact Displacement", e.what());
+      throw InputError("Verification/" + name, e.what());
+    }
+  };
+  if (!params.get<std::string>("Exact Displacement").empty()) {
+    exact_.push_back(read("Exact Displacement", {"X", "t"}));
+  } else if (hasExact_) {
+    for (const char* c : {"x", "y"}) {
+      if (params.get<std::string>(std::string("Exact Displacement ") + c).empty())
+        throw InputError(std::string("Verification/Exact Displacement ") + c,
+                         "is missing: give both components");
+      exact_.push_back(read(std::string("Exact Displacement ") + c, {"X", "Y", "t"}));
     }
   }
   if (maxRms_ > 0 && !hasExact_)
@@ -54,12 +71,23 @@ VerificationResult Verification::check(const ParticleSet<Dim>& particles,
   std::ostringstream line;
   line.precision(6);
   if (hasExact_) {
+    if (static_cast<int>(exact_.size()) != Dim)
+      throw InputError("Verification/Exact Displacement",
+                       Dim == 1 ? "use 'Exact Displacement' on a 1-D grid"
+                                : "use 'Exact Displacement x' and 'Exact Displacement y' on a "
+                                  "2-D grid");
     auto X = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.X);
     auto u = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.u);
     double local[2] = {0.0, 0.0}, global[2];
     for (std::size_t p = 0; p < particles.size(); ++p) {
-      const double e = u(p, 0) - exact_(X(p, 0), time);
-      local[0] += e * e;
+      double e2 = 0.0;
+      for (int d = 0; d < Dim; ++d) {
+        const double ed = u(p, d) - (Dim == 1 ? exact_[d](X(p, 0), time)
+                                              : exact_[d](X(p, 0), X(p, Dim - 1), time));
+        e2 += ed * ed;
+      }
+      const double e = std::sqrt(e2);
+      local[0] += e2;
       local[1] = std::max(local[1], std::abs(e));
     }
     const GlobalId n = particles.size();
@@ -97,6 +125,9 @@ VerificationResult Verification::check(const ParticleSet<Dim>& particles,
 }
 
 template VerificationResult Verification::check<1>(const ParticleSet<1>&,
+                                                   const Teuchos::RCP<const Comm>&, double, double,
+                                                   double) const;
+template VerificationResult Verification::check<2>(const ParticleSet<2>&,
                                                    const Teuchos::RCP<const Comm>&, double, double,
                                                    double) const;
 

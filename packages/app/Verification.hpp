@@ -38,7 +38,7 @@ class Verification {
 
  private:
   bool hasExact_;
-  Formula exact_;
+  std::vector<Formula> exact_;  // per component
   double maxRms_, expectedF0_, expectedFL_, reactionTolerance_;
 };
 

@@ -40,10 +40,11 @@ struct ParticleSet {
   Scalars volume0;  // reference V_p
   Scalars section;  // 1-D cross-section A(x_p); 2-D thickness
 
-  Tensors F;        // deformation gradient
-  Tensors stress;   // stress (1-D: axial force per unit section)
-  Tensors domain;   // particle domain: column k is the half-vector r_k (1-D: half length)
-  Tensors domain0;  // reference particle domain
+  Tensors F;         // deformation gradient
+  Tensors stress;    // Cauchy stress (1-D: axial force per unit section)
+  Scalars stressZZ;  // 2-D plane strain: out-of-plane Cauchy stress (output only)
+  Tensors domain;    // particle domain: column k is the half-vector r_k (1-D: half length)
+  Tensors domain0;   // reference particle domain
 
   Kokkos::View<double* [kMaxMaterialProps], memory_space> props;  // material parameters at X_p
 
@@ -57,7 +58,7 @@ struct ParticleSet {
   template <class Fn>
   void forEachField(Fn&& f) {
     f(id), f(body), f(material), f(X), f(x), f(u), f(v), f(a), f(force), f(mass), f(volume),
-        f(volume0), f(section), f(F), f(stress), f(domain), f(domain0), f(props);
+        f(volume0), f(section), f(F), f(stress), f(stressZZ), f(domain), f(domain0), f(props);
   }
 
   // Keeps existing entries; new entries are zero.

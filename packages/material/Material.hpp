@@ -40,6 +40,11 @@ class Material {
   virtual void energyDensity(const Particles& particles, const Tensors& F, int index,
                              typename Particles::Scalars& W) const = 0;
 
+  // Out-of-plane Cauchy stress sigma_zz of the particles of this material (2-D plane
+  // strain; output only).  Laws without one leave it untouched.
+  virtual void outOfPlaneStress(const Particles& /*particles*/, const Tensors& /*F*/, int /*index*/,
+                                typename Particles::Scalars& /*stressZZ*/) const {}
+
   // True when P is affine in F (then a total-Lagrangian, or 1-D, step is a linear system).
   virtual bool isLinear() const { return false; }
 

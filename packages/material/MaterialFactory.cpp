@@ -6,6 +6,7 @@
 #include "core/Parameters.hpp"
 #include "material/ElasticLaws1D.hpp"
 #include "material/FormulaLaw1D.hpp"
+#include "material/PlaneStrainLaws.hpp"
 
 namespace impm {
 
@@ -45,7 +46,10 @@ const std::vector<Entry<1>>& registry<1>() {
 
 template <>
 const std::vector<Entry<2>>& registry<2>() {
-  static const std::vector<Entry<2>> models = {};
+  static const std::vector<Entry<2>> models = {
+      entry<PlaneStrainLaw<LinearElasticLaw>, 2>(),
+      entry<PlaneStrainLaw<NeoHookeanLaw>, 2>(),
+  };
   return models;
 }
 

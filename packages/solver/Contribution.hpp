@@ -44,6 +44,10 @@ class Contribution {
   // Matrix entries (global row, global column) this rank adds beyond the particle couplings.
   virtual void couplings(const StepContext<Dim>& /*ctx*/,
                          std::vector<std::pair<GO, GO>>& /*out*/) const {}
+  // Prescribed unknowns this rank owns, as (global index, value of the increment): their
+  // rows of the system become du_i = value (Dirichlet conditions).
+  virtual void constraints(const StepContext<Dim>& /*ctx*/,
+                           std::vector<std::pair<GO, double>>& /*out*/) const {}
   // Initial guess of the extra unknowns this rank owns (x is the owned vector).
   virtual void initialGuess(const StepContext<Dim>& /*ctx*/, Vector& /*x*/) const {}
   // Adds to the residual / Jacobian; x and f are overlap-local.

@@ -7,6 +7,9 @@
 #include "core/Errors.hpp"
 #include "core/Timers.hpp"
 
+#include <Teuchos_CommHelpers.hpp>
+
+#include <cmath>
 #include <sstream>
 
 namespace impm {
@@ -89,6 +92,66 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
   Pn_ = typename ParticleSet<Dim>::Tensors("P relative to step start", n);
   A_ = Tangents<Dim>("A", n);
   An_ = Tangents<Dim>("A relative to step start", n);
+  // Prescribed rows get the size of a stiffness diagonal (modulus h^(Dim-2)), so that they
+  // neither dominate nor vanish in the preconditioner.
+  double modulus = 0.0, local = 0.0;
+  for (std::size_t m = 0; m < materials_.size(); ++m)
+    local = std::max(local, materials_[m]->maxModulus(particles_, static_cast<int>(m)));
+  Teuchos::reduceAll(*ownership.comm(), Teuchos::REDUCE_MAX, local, Teuchos::outArg(modulus));
+  double h = grid_.spacing[0];
+  for (int d = 1; d < Dim; ++d)
+    h = std::min(h, grid_.spacing[d]);
+  constraintScale_ = (modulus > 0 ? modulus : 1.0) * std::pow(h, Dim - 2);
+}
+
+template <int Dim>
+std::vector<std::pair<LO, double>> GridSystem<Dim>::constrainedRows() const {
+  std::vector<std::pair<GO, double>> global;
+  for (std::size_t c = 0; c < contributions_.size(); ++c)
+    contributions_[c]->constraints(context(static_cast<int>(c)), global);
+  std::vector<std::pair<LO, double>> rows;
+  const auto& owned = *dofs_.ownedMap();
+  for (const auto& [gid, value] : global) {
+    const LO lid = owned.getLocalElement(gid);
+    if (lid != Teuchos::OrdinalTraits<LO>::invalid())
+      rows.emplace_back(lid, value);
+  }
+  return rows;
+}
+
+template <int Dim>
+void GridSystem<Dim>::applyConstraints(const Vector& x, Vector* residual,
+                                       CrsMatrix* jacobian) const {
+  const auto rows = constrainedRows();
+  if (rows.empty())
+    return;
+  if (residual) {
+    auto r = residual->getLocalViewHost(Tpetra::Access::ReadWrite);
+    auto xv = x.getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (const auto& [lid, value] : rows)
+      r(lid, 0) = constraintScale_ * (xv(lid, 0) - value);
+  }
+  if (jacobian) {
+    // Row lid becomes scale * e_lid: the graph stays, the values of the row change.
+    const auto& cols = *jacobian->getColMap();
+    const auto& owned = *dofs_.ownedMap();
+    Kokkos::View<LO* [2]> rowCol("constrained rows", rows.size());
+    auto host = Kokkos::create_mirror_view(rowCol);
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      host(i, 0) = rows[i].first;
+      host(i, 1) = cols.getLocalElement(owned.getGlobalElement(rows[i].first));
+    }
+    Kokkos::deep_copy(rowCol, host);
+    auto K = jacobian->getLocalMatrixDevice();
+    const double scale = constraintScale_;
+    Kokkos::parallel_for(
+        "impm::constrainRows", RangePolicy<DefaultExecSpace>(0, rows.size()),
+        KOKKOS_LAMBDA(const int i) {
+          auto row = K.row(rowCol(i, 0));
+          for (LO k = 0; k < row.length; ++k)
+            row.value(k) = row.colidx(k) == rowCol(i, 1) ? scale : 0.0;
+        });
+  }
 }
 
 template <int Dim>
@@ -100,7 +163,8 @@ void GridSystem<Dim>::checkEveryActiveNodeIsIntegrated() const {
     auto local = marks.getLocalViewHost(Tpetra::Access::ReadWrite);
     auto lids = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), entryDofs_);
     for (std::size_t k = 0; k < lids.extent(0); ++k)
-      local(lids(k), 0) = 1.0;
+      for (int d = 0; d < Dim; ++d)
+        local(lids(k) + d, 0) = 1.0;
   }
   Vector owned(dofs_.ownedMap());
   owned.doExport(marks, Export(dofs_.overlapMap(), dofs_.ownedMap()), Tpetra::ADD);
@@ -148,6 +212,9 @@ Teuchos::RCP<Vector> GridSystem<Dim>::initialGuess() const {
   auto x = Teuchos::rcp(new Vector(dofs_.ownedMap()));
   for (std::size_t c = 0; c < contributions_.size(); ++c)
     contributions_[c]->initialGuess(context(static_cast<int>(c)), *x);
+  auto values = x->getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (const auto& [lid, value] : constrainedRows())
+    values(lid, 0) = value;
   return x;
 }
 
@@ -209,6 +276,7 @@ void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jac
     }
     f.endAssembly();
     Tpetra::deep_copy(*residual, *f.getVector(0));
+    applyConstraints(x, residual, nullptr);
   }
   if (jacobian) {
     IMPM_TIMER("Jacobian");
@@ -223,6 +291,7 @@ void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jac
     for (std::size_t c = 0; c < contributions_.size(); ++c)
       contributions_[c]->addJacobian(context(static_cast<int>(c)), constHost(xHost), J);
     J.endAssembly();
+    applyConstraints(x, nullptr, &J);
   }
 }
 

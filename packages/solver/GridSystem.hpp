@@ -78,6 +78,10 @@ class GridSystem : public ResidualModel {
 
  private:
   void updateStress(const Vector& x);
+  // Owned local index and prescribed increment of every constrained unknown.
+  std::vector<std::pair<LO, double>> constrainedRows() const;
+  // Rows of prescribed unknowns: residual scale (x_i - value), Jacobian row scale e_i.
+  void applyConstraints(const Vector& x, Vector* residual, CrsMatrix* jacobian) const;
   void checkEveryActiveNodeIsIntegrated() const;
 
   const GridGeometry<Dim> grid_;
@@ -97,6 +101,7 @@ class GridSystem : public ResidualModel {
   Inertia inertia_;
   Teuchos::RCP<Vector> inertiaOverlap_;  // r on the overlap map
   bool frozen_ = false, frozenReady_ = false;
+  double constraintScale_ = 1.0;
   // Work arrays: trial F, P and A, and P, A relative to the start of the step.
   typename ParticleSet<Dim>::Tensors F_, P_, Pn_;
   Tangents<Dim> A_, An_;

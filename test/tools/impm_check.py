@@ -6,6 +6,8 @@
   ranks        run a deck on several rank counts; assert the particle CSVs agree
   fails        run a deck that must be rejected; assert the exit status, that the message
                is printed, and that no output file was written
+  uniform      run a deck whose exact solution is a homogeneous deformation; assert that
+               every particle carries the same F, stress and J
 
 Only the Python standard library is used.
 """
@@ -44,13 +46,13 @@ def stem(deck):
 
 
 def convergence(args):
-    errors, table = [], []
+    errors, table, field_errors = [], [], []
     failures = []
     if not args.rate and args.exact is None:
         sys.exit("convergence needs --rate or --exact")
     for n in args.cells:
         out = tempfile.mkdtemp(prefix="impm-conv-", dir=".")
-        sets = ["Grid/Cells={%d}" % n, "Discretization/Method=" + args.method,
+        sets = ["Grid/Cells=" + args.grid % n, "Discretization/Method=" + args.method,
                 "Verification/Maximum RMS Error=0", "Verification/Reaction Tolerance=0",
                 "Solver/Print Iterations=false"] + args.set
         if args.time_step:  # proportional to the cell size
@@ -63,6 +65,9 @@ def convergence(args):
         energy = [float(r["total_energy"]) for r in
                   read_csv(os.path.join(out, stem(args.deck) + "_history.csv"))]
         change = max(abs(e - energy[0]) for e in energy) / energy[0] if energy[0] else 0.0
+        if args.field:
+            particles = read_csv(os.path.join(out, stem(args.deck) + "_particles.csv"))
+            field_errors.append(field_error(particles, *args.field))
         shutil.rmtree(out)
         if args.energy_drift is not None and change > args.energy_drift:
             failures.append("total energy changes by %.2e at %d cells (allowed %g)"
@@ -96,6 +101,64 @@ def convergence(args):
                 if abs(value - exact) > tol:
                     failures.append("%s = %.15g at %d cells differs from %.15g by more than %g"
                                     % (name, value, n, exact, tol))
+    if args.field:
+        failures += check_field(args, field_errors)
+    for f in failures:
+        print("FAIL:", f)
+    sys.exit(1 if failures else 0)
+
+
+def field_error(particles, column, expression, scale):
+    """RMS over the particles of (column - expression(X, Y)) / scale."""
+    total = 0.0
+    for p in particles:
+        names = {"X": float(p["X"]), "Y": float(p.get("Y", 0.0)), "math": math}
+        total += ((float(p[column]) - eval(expression, {"__builtins__": {}}, names)) / float(scale)) ** 2
+    return math.sqrt(total / len(particles))
+
+
+def check_field(args, errors):
+    failures = []
+    print("%s error against %s, relative to %s:" % tuple(args.field))
+    for k, e in enumerate(errors):
+        rate = math.log(errors[k - 1] / e) / math.log(2) if k else float("nan")
+        print("  %-6d %-12.4e %-6.3f" % (args.cells[k], e, rate))
+        if args.field_max_error and e > args.field_max_error[k]:
+            failures.append("%s error %.4e at %d cells is above %g"
+                            % (args.field[0], e, args.cells[k], args.field_max_error[k]))
+        if k and args.field_rate and not (args.field_rate[0] <= rate <= args.field_rate[1]):
+            failures.append("%s error rate %.3f between %d and %d cells is outside [%g, %g]"
+                            % (args.field[0], rate, args.cells[k - 1], args.cells[k],
+                               args.field_rate[0], args.field_rate[1]))
+    return failures
+
+
+def uniform(args):
+    """The particle fields of a homogeneous deformation must be equal at every particle: the
+    spread (max - min) of each column, relative to 1 for F and J and to the largest stress
+    magnitude for stresses, must stay below --rtol."""
+    out = tempfile.mkdtemp(prefix="impm-uniform-", dir=".")
+    r = run_impm(args, args.deck, out, ["Solver/Print Iterations=false"] + args.set, args.np)
+    if r.returncode != 0:
+        print(r.stdout, r.stderr)
+        sys.exit("impm failed")
+    rows = read_csv(os.path.join(out, stem(args.deck) + "_particles.csv"))
+    shutil.rmtree(out)
+    stresses = [c for c in args.columns if c.startswith("stress")]
+    stress_scale = max(abs(float(p[c])) for p in rows for c in stresses) if stresses else 1.0
+    failures = []
+    for c in args.columns:
+        values = [float(p[c]) for p in rows]
+        scale = stress_scale if c.startswith("stress") else 1.0
+        spread = (max(values) - min(values)) / scale
+        print("%-10s mean %-22.15g spread %.2e" % (c, sum(values) / len(values), spread))
+        if spread > args.rtol:
+            failures.append("%s varies by %.2e over %d particles (allowed %g)"
+                            % (c, spread, len(rows), args.rtol))
+    for name, value in args.expect:
+        mean = sum(float(p[name]) for p in rows) / len(rows)
+        if abs(mean - float(value)) > args.rtol * max(1.0, abs(float(value))):
+            failures.append("%s = %.15g, expected %s" % (name, mean, value))
     for f in failures:
         print("FAIL:", f)
     sys.exit(1 if failures else 0)
@@ -125,7 +188,10 @@ def ranks(args):
             a = [float(row[c]) for row in base]
             b = [float(row[c]) for row in other]
             scale = max(max(abs(v) for v in a), 1e-300)
-            diff = max(abs(x - y) for x, y in zip(a, b)) / scale
+            absolute = max(abs(x - y) for x, y in zip(a, b))
+            diff = absolute / scale
+            if absolute <= args.atol:  # a column of round-off (a zero shear, say)
+                continue
             worst = max(worst, diff)
             if diff > args.rtol:
                 failures.append("column %s differs by %.3e (relative to its largest value) between "
@@ -281,11 +347,27 @@ def main():
                    help="the run must lose at least this fraction of its energy (non-conserving)")
     c.add_argument("--np", type=int, default=1)
     c.add_argument("--set", action="append", default=[])
+    c.add_argument("--grid", default="{%d}", help="Grid/Cells value, %%d the size (2-D: {1,%%d})")
+    c.add_argument("--field", nargs=3, metavar=("COLUMN", "EXACT", "SCALE"),
+                   help="also measure the RMS error of a particle column against a Python "
+                        "expression of X, Y (math.*), relative to SCALE")
+    c.add_argument("--field-rate", type=float, nargs=2, metavar=("MIN", "MAX"))
+    c.add_argument("--field-max-error", type=float, nargs="+")
+
+    u = sub.add_parser("uniform")
+    u.add_argument("--deck", required=True)
+    u.add_argument("--columns", nargs="+", required=True)
+    u.add_argument("--rtol", type=float, default=1e-12)
+    u.add_argument("--expect", nargs=2, action="append", default=[], metavar=("COLUMN", "VALUE"))
+    u.add_argument("--np", type=int, default=1)
+    u.add_argument("--set", action="append", default=[])
 
     r = sub.add_parser("ranks")
     r.add_argument("--deck", required=True)
     r.add_argument("--np", type=int, nargs="+", required=True)
     r.add_argument("--rtol", type=float, default=1e-10)
+    r.add_argument("--atol", type=float, default=0.0,
+                   help="differences up to this are round-off whatever the column's scale")
     r.add_argument("--set", action="append", default=[])
 
     f = sub.add_parser("fails")
@@ -318,7 +400,7 @@ def main():
 
     args = p.parse_args()
     {"convergence": convergence, "ranks": ranks, "fails": fails, "docs": docs, "newton": newton,
-     "same": same}[args.check](args)
+     "same": same, "uniform": uniform}[args.check](args)
 
 
 if __name__ == "__main__":

@@ -1,0 +1,106 @@
+#include "bc/DirichletNodes.hpp"
+
+#include <cmath>
+
+#include "core/Errors.hpp"
+#include "core/Parameters.hpp"
+
+namespace impm {
+
+template <int Dim>
+Teuchos::ParameterList DirichletNodes<Dim>::validParameters() {
+  Teuchos::ParameterList valid;
+  declareChoice(valid, "Face", "left", {"left", "right", "bottom", "top", "box"},
+                "The grid nodes held: those on a face of the grid (left: x = min, right: x = "
+                "max, bottom: y = min, top: y = max), or those inside Box",
+                true);
+  declareDoubleArray(valid, "Box", {0.0, 0.0, 0.0, 0.0}, {2, 4},
+                     "With Face = box: xmin, xmax (1-D) or xmin, xmax, ymin, ymax (2-D); nodes "
+                     "on its edges are inside");
+  declareChoice(valid, "Component", "x", {"x", "y"}, "The displacement component held", true);
+  declareFormula(valid, "Value", "0", {"x", "y", "t"},
+                 "Prescribed displacement g(x, y, t) at the node position (0: a roller or "
+                 "clamp); ramped with the load factor in static load steps");
+  return valid;
+}
+
+template <int Dim>
+DirichletNodes<Dim>::DirichletNodes(const std::string& name, const Teuchos::ParameterList& params,
+                                    const GridGeometry<Dim>& grid, double initialLoadFactor)
+    : grid_(grid), committedLoad_(initialLoadFactor) {
+  const std::string path = "Boundary Conditions/" + name + "/";
+  component_ = params.get<std::string>("Component") == "x" ? 0 : 1;
+  if (component_ >= Dim)
+    throw InputError(path + "Component", "a 1-D grid has only the x component");
+  try {
+    value_ = Formula(formulaText(params, "Value"), {"x", "y", "t"});
+  } catch (const InputError& e) {
+    throw InputError(path + "Value", e.what());
+  }
+  for (int d = 0; d < Dim; ++d)
+    lo_[d] = 0, hi_[d] = grid.cells[d];
+  const auto& face = params.get<std::string>("Face");
+  if (face == "box") {
+    const auto& box = params.get<Teuchos::Array<double>>("Box");
+    if (static_cast<int>(box.size()) != 2 * Dim)
+      throw InputError(path + "Box", "needs " + std::to_string(2 * Dim) + " numbers on a " +
+                                         std::to_string(Dim) + "-D grid");
+    for (int d = 0; d < Dim; ++d) {
+      const double tol = 1e-9;
+      lo_[d] = std::max(0, static_cast<int>(std::ceil(grid.gridCoord(d, box[2 * d]) - tol)));
+      hi_[d] = std::min(grid.cells[d],
+                        static_cast<int>(std::floor(grid.gridCoord(d, box[2 * d + 1]) + tol)));
+      if (lo_[d] > hi_[d])
+        throw InputError(path + "Box", "holds no grid node");
+    }
+    return;
+  }
+  const int d = (face == "left" || face == "right") ? 0 : 1;
+  if (d >= Dim)
+    throw InputError(path + "Face", "a 1-D grid has only the left and right faces");
+  if (face == "left" || face == "bottom")
+    hi_[d] = 0;
+  else
+    lo_[d] = grid.cells[d];
+}
+
+template <int Dim>
+bool DirichletNodes<Dim>::selects(const int idx[Dim]) const {
+  for (int d = 0; d < Dim; ++d)
+    if (idx[d] < lo_[d] || idx[d] > hi_[d])
+      return false;
+  return true;
+}
+
+template <int Dim>
+double DirichletNodes<Dim>::prescribed(const double* x, double time, double loadFactor) const {
+  return loadFactor * value_(x[0], Dim > 1 ? x[Dim - 1] : 0.0, time);
+}
+
+template <int Dim>
+void DirichletNodes<Dim>::constraints(const StepContext<Dim>& ctx,
+                                      std::vector<std::pair<GO, double>>& out) const {
+  for (const GlobalId node : ctx.dofs.ownedActiveNodes()) {
+    int idx[Dim];
+    grid_.nodeIndex(node, idx);
+    if (!selects(idx))
+      continue;
+    double x[Dim];
+    for (int d = 0; d < Dim; ++d)
+      x[d] = grid_.nodeCoord(d, idx[d]);
+    out.emplace_back(
+        ctx.dofs.nodeDof(node, component_),
+        prescribed(x, ctx.time, ctx.loadFactor) - prescribed(x, committedTime_, committedLoad_));
+  }
+}
+
+template <int Dim>
+void DirichletNodes<Dim>::commit(const StepContext<Dim>& ctx, const HostValues& /*x*/) {
+  committedTime_ = ctx.time;
+  committedLoad_ = ctx.loadFactor;
+}
+
+template class DirichletNodes<1>;
+template class DirichletNodes<2>;
+
+}  // namespace impm

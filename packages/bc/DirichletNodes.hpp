@@ -1,0 +1,45 @@
+#pragma once
+// Prescribed displacement of one component on the grid nodes of a face or a box (2-D
+// rollers, clamps, moving platens): u_a(x_i, t) = g(x_i, t) at every selected node i that
+// some integration point reaches.  The step's unknowns are increments, so the row of each
+// such unknown becomes du_ia = lambda_(n+1) g(x_i, t_(n+1)) - lambda_n g(x_i, t_n), with
+// lambda the load factor of static load steps (1 in dynamics).  Nodes that no integration
+// point reaches are not unknowns and are left alone.
+
+#include <Teuchos_ParameterList.hpp>
+
+#include <array>
+#include <string>
+
+#include "core/Formula.hpp"
+#include "solver/Contribution.hpp"
+
+namespace impm {
+
+template <int Dim>
+class DirichletNodes : public Contribution<Dim> {
+ public:
+  static Teuchos::ParameterList validParameters();
+
+  // initialLoadFactor: the load factor at t = 0 (0 for static load steps, 1 in dynamics).
+  // Throws InputError naming "Boundary Conditions/<name>/..." when the selection is empty
+  // or does not fit the grid.
+  DirichletNodes(const std::string& name, const Teuchos::ParameterList& params,
+                 const GridGeometry<Dim>& grid, double initialLoadFactor);
+
+  void constraints(const StepContext<Dim>& ctx,
+                   std::vector<std::pair<GO, double>>& out) const override;
+  void commit(const StepContext<Dim>& ctx, const HostValues& x) override;
+
+ private:
+  bool selects(const int idx[Dim]) const;
+  double prescribed(const double* x, double time, double loadFactor) const;
+
+  GridGeometry<Dim> grid_;
+  int component_;
+  std::array<int, 2> lo_{}, hi_{};  // selected node index range per direction (inclusive)
+  Formula value_;
+  double committedTime_ = 0.0, committedLoad_;
+};
+
+}  // namespace impm
