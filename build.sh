@@ -14,7 +14,7 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 build_dir="${IMPM_BUILD_DIR:-$here/build}"
 jobs="${IMPM_JOBS:-$(nproc)}"
-demo_deck="input/bar_static_s2.xml"
+demo_deck="input/colliding_disks.xml"
 
 # Libraries and tools the build and the tests use.
 build_packages=(cmake g++ make ccache trilinos-all-dev libptscotch-dev libscotch-dev
@@ -63,8 +63,8 @@ case "$cmd" in
     echo "impm: demo outputs are in $out"
     ls -1 "$out" | sed 's/^/  /'
     echo "Open the .exo files in ParaView (File > Open, Apply); particles appear as points,"
-    echo "the grid as cells; colour by displacementX or stress.  The CSV files open in any"
-    echo "spreadsheet."
+    echo "the grid as cells, colliding_disks_domains.exo as the deformed particle domains;"
+    echo "colour by stress_yy.  The CSV files open in any spreadsheet."
     ;;
   test)
     install_missing "${build_packages[@]}" "${test_packages[@]}"

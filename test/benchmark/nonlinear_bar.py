@@ -58,7 +58,11 @@ def main():
     for preconditioner in PRECONDITIONERS:
         points = []
         for n in args.particles:
-            runs = [run_once(args.impm, n, preconditioner, args.timeout) for _ in range(args.repeat)]
+            runs = []
+            for _ in range(args.repeat):
+                runs.append(run_once(args.impm, n, preconditioner, args.timeout))
+                if runs[-1] is None:
+                    break
             if None in runs:
                 lines.append("| %d | %s | stopped after %.0f s | | | | | | | |"
                              % (n, preconditioner, args.timeout))
@@ -75,7 +79,7 @@ def main():
                             median_run(runs, lambda r: r.wall), max(r.memory for r in runs)))
             print(lines[-1], flush=True)
         fits.append("- %s: time per Newton iteration grows like N^%.2f (%d to %d particles)"
-                    % (preconditioner, exponent(points[1:]), args.particles[1], args.particles[-1]))
+                    % (preconditioner, exponent(points[1:]), args.particles[1], points[-1][0]))
     text = "\n".join(lines) + "\n\nScaling exponents (least-squares fit of log time against log N):\n\n"
     text += "\n".join(fits) + "\n"
     print(text)

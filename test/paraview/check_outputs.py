@@ -2,9 +2,11 @@
 
 Run with pvbatch (under a virtual X server: Debian's ParaView needs a display).  For every
 file: the reader opens it, it has the expected time steps, points and cells, and the named
-arrays; the displaced particle positions match the particle CSV; a PNG is rendered.
+arrays; the displaced particle positions match the particle CSV; a PNG is rendered (2-D
+gimp and cpdi runs: the deformed particle domains of <prefix>_domains.exo, warped by their
+corner displacements).
 
-usage: pvbatch check_outputs.py OUTPUT_DIR PREFIX PNG
+usage: pvbatch check_outputs.py OUTPUT_DIR PREFIX PNG [OUTPUT_EVERY]
 """
 
 import csv
@@ -41,32 +43,58 @@ def arrays(data, kind):
 with open(os.path.join(out_dir, prefix + "_particles.csv")) as f:
     table = list(csv.DictReader(f))
 history = list(csv.DictReader(open(os.path.join(out_dir, prefix + "_history.csv"))))
+two_d = "Y" in table[0]
 
 grid_reader, _, grid, grid_times = fetch(os.path.join(out_dir, prefix + "_grid.exo"))
-check(len(grid_times) == len(history), "grid file: %d time steps, history: %d rows"
-      % (len(grid_times), len(history)))
-check(grid.GetNumberOfCells() > 0 and grid.GetCellType(0) == 3, "grid cells are not BAR2 lines")
-check("displacementX" in arrays(grid, "point"), "grid file has no displacementX")
+every = int(sys.argv[4]) if len(sys.argv) > 4 else 1  # the run's Output/Every
+steps = len(history) - 1
+expected_times = 1 + steps // every + (1 if steps % every else 0)
+check(len(grid_times) == expected_times, "grid file: %d time steps, expected %d (history: %d "
+      "rows, output every %d)" % (len(grid_times), expected_times, len(history), every))
+expected_cell = 9 if two_d else 3  # VTK_QUAD, VTK_LINE
+check(grid.GetNumberOfCells() > 0 and grid.GetCellType(0) == expected_cell,
+      "grid cells are not %s" % ("QUAD4 quadrilaterals" if two_d else "BAR2 lines"))
+# Static and fixed-grid runs keep nodal displacements; moving-particle dynamics the grid
+# velocity and mass of the last step.
+grid_arrays = arrays(grid, "point")
+# (ParaView joins displacementX, displacementY into a vector "displacement".)
+check(any(n in grid_arrays for n in ("displacementX", "displacement", "velocityX", "velocity")),
+      "grid file has neither a displacement nor a velocity: %s" % grid_arrays)
 
 reader, merged, particles, times = fetch(os.path.join(out_dir, prefix + "_particles.exo"))
 check(particles.GetNumberOfPoints() == len(table),
       "%d particles in Exodus, %d in the CSV" % (particles.GetNumberOfPoints(), len(table)))
 check(particles.GetCellType(0) == 1, "particles are not vertex cells")
-for name in ("strain", "stress", "volume", "mass"):
+names = ("stress_xx", "stress_yy", "stress_xy", "J", "volume", "mass") if two_d else (
+    "strain", "stress", "volume", "mass")
+for name in names:
     check(name in arrays(particles, "cell"), "particle file has no " + name)
-# ParaView applies displacementX: the points are the current positions x of the CSV.
+# ParaView applies the displacement: the points are the current positions of the CSV.
 for p in range(0, len(table), max(1, len(table) // 7)):
-    x = particles.GetPoint(p)[0]
-    check(abs(x - float(table[p]["x"])) < 1e-9 * max(1.0, abs(x)),
-          "particle %d drawn at %g, CSV says x = %s" % (p, x, table[p]["x"]))
+    for d, column in enumerate(("x", "y") if two_d else ("x",)):
+        x = particles.GetPoint(p)[d]
+        check(abs(x - float(table[p][column])) < 1e-9 * max(1.0, abs(x)),
+              "particle %d drawn at %s = %g, CSV says %s" % (p, column, x, table[p][column]))
+
+shown, colour, representation = merged, "stress", "Points"
+domains_path = os.path.join(out_dir, prefix + "_domains.exo")
+if two_d:
+    colour = "stress_yy"
+    if os.path.exists(domains_path):
+        _, domains_merged, domains, domain_times = fetch(domains_path)
+        check(domains.GetNumberOfCells() == len(table) and domains.GetCellType(0) == 9,
+              "domain file: %d cells (type %d) for %d particles"
+              % (domains.GetNumberOfCells(), domains.GetCellType(0), len(table)))
+        check(len(domain_times) == len(times), "domain file and particle file time steps differ")
+        shown, representation = domains_merged, "Surface With Edges"
 
 view = CreateView("RenderView")
-view.ViewSize = [800, 300]
+view.ViewSize = [600, 600] if two_d else [800, 300]
 view.ViewTime = times[-1]
-display = Show(merged, view)
-ColorBy(display, ("CELLS", "stress"))
+display = Show(shown, view)
+ColorBy(display, ("CELLS", colour))
 display.RescaleTransferFunctionToDataRange(True)
-display.SetRepresentationType("Points")
+display.SetRepresentationType(representation)
 display.PointSize = 6
 ResetCamera(view)
 Render(view)
