@@ -25,18 +25,20 @@ struct CpdiScheme {
 
   KOKKOS_INLINE_FUNCTION static double sign(int c, int k) { return (c >> k) & 1 ? 1.0 : -1.0; }
 
-  // Corner c of particle p, in grid units.
+  // Corner c of particle p, in grid units, clipped to the grid (see clipToGrid).
   KOKKOS_INLINE_FUNCTION void corner(int p, int c, double g[Dim]) const {
     for (int d = 0; d < Dim; ++d) {
       double xc = x(p, d);
       for (int k = 0; k < Dim; ++k)
         xc += sign(c, k) * domain(p, d, k);
-      g[d] = grid.gridCoord(d, xc);
+      g[d] = clipToGrid(grid, d, grid.gridCoord(d, xc));
     }
   }
 
   KOKKOS_INLINE_FUNCTION bool nodeBox(int p, int lo[Dim], int hi[Dim], double tol) const {
     for (int d = 0; d < Dim; ++d) {
+      if (!centreInside(grid, d, grid.gridCoord(d, x(p, d)), tol))
+        return false;
       lo[d] = grid.cells[d];
       hi[d] = 0;
     }
@@ -44,8 +46,6 @@ struct CpdiScheme {
       double g[Dim];
       corner(p, c, g);
       for (int d = 0; d < Dim; ++d) {
-        if (!(g[d] >= -tol && g[d] <= grid.cells[d] + tol))
-          return false;
         int cell = static_cast<int>(Kokkos::Experimental::floor(g[d]));
         cell = cell < 0 ? 0 : (cell >= grid.cells[d] ? grid.cells[d] - 1 : cell);
         if (cell < lo[d])

@@ -20,19 +20,19 @@ struct GimpScheme {
   GimpScheme(const GridGeometry<Dim>& g, const ParticleSet<Dim, Space>& ps)
       : grid(g), x(ps.x), domain(ps.domain) {}
 
-  // Domain ends along d in grid units.
+  // Domain ends along d in grid units, clipped to the grid (see clipToGrid).
   KOKKOS_INLINE_FUNCTION void ends(int p, int d, double& a, double& b) const {
     const double l = domain(p, d, d);
-    a = grid.gridCoord(d, x(p, d) - l);
-    b = grid.gridCoord(d, x(p, d) + l);
+    a = clipToGrid(grid, d, grid.gridCoord(d, x(p, d) - l));
+    b = clipToGrid(grid, d, grid.gridCoord(d, x(p, d) + l));
   }
 
   KOKKOS_INLINE_FUNCTION bool nodeBox(int p, int lo[Dim], int hi[Dim], double tol) const {
     for (int d = 0; d < Dim; ++d) {
+      if (!centreInside(grid, d, grid.gridCoord(d, x(p, d)), tol))
+        return false;
       double a, b;
       ends(p, d, a, b);
-      if (!(a >= -tol && b <= grid.cells[d] + tol))
-        return false;
       lo[d] = a <= 0 ? 0 : static_cast<int>(Kokkos::Experimental::floor(a));
       hi[d] = static_cast<int>(Kokkos::Experimental::ceil(b));
       if (hi[d] > grid.cells[d])

@@ -41,6 +41,20 @@ KOKKOS_INLINE_FUNCTION void tensorProduct(const double n[Dim], const double dn[D
   }
 }
 
+// A particle domain that reaches past the edge of the grid is clipped to it: the grid's
+// edge bounds the material (it is where rollers and walls act), and a domain updated with
+// F pokes past a boundary that the material only touches by O(h^2) (problem P2's particles
+// next to a roller).  Grid units: the grid spans [0, cells].  A particle has left the grid
+// only when its centre has.
+template <class Grid>
+KOKKOS_INLINE_FUNCTION double clipToGrid(const Grid& grid, int d, double g) {
+  return g < 0.0 ? 0.0 : (g > grid.cells[d] ? double(grid.cells[d]) : g);
+}
+template <class Grid>
+KOKKOS_INLINE_FUNCTION bool centreInside(const Grid& grid, int d, double g, double tol) {
+  return g >= -tol && g <= grid.cells[d] + tol;
+}
+
 // Average of the tent over [a, b] (grid units); the tent value itself when b == a.
 KOKKOS_INLINE_FUNCTION double tentAverage(double a, double b) {
   return b > a ? (tentIntegral(b) - tentIntegral(a)) / (b - a) : tent(a);

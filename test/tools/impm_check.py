@@ -52,7 +52,7 @@ def convergence(args):
         sys.exit("convergence needs --rate or --exact")
     for n in args.cells:
         out = tempfile.mkdtemp(prefix="impm-conv-", dir=".")
-        sets = ["Grid/Cells=" + args.grid % n, "Discretization/Method=" + args.method,
+        sets = ["Grid/Cells=" + args.grid.replace("%d", str(n)), "Discretization/Method=" + args.method,
                 "Verification/Maximum RMS Error=0", "Verification/Reaction Tolerance=0",
                 "Solver/Print Iterations=false"] + args.set
         if args.time_step:  # proportional to the cell size
