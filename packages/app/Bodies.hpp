@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "app/Shape.hpp"
 #include "basis/Method.hpp"
 #include "core/Decomposition.hpp"
 #include "core/Formula.hpp"
+#include "core/Shape.hpp"
 #include "material/Material.hpp"
 
 namespace impm {

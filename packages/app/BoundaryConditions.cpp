@@ -2,6 +2,7 @@
 
 #include "app/TimeIntegration.hpp"
 #include "bc/DirichletNodes.hpp"
+#include "bc/EdgeTraction.hpp"
 #include "bc/RobinEnd.hpp"
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
@@ -10,13 +11,16 @@ namespace impm {
 
 Teuchos::ParameterList boundaryConditionValidParameters() {
   Teuchos::ParameterList valid;
-  declareChoice(valid, "Type", "Robin", {"Robin", "Dirichlet"},
+  declareChoice(valid, "Type", "Robin", {"Robin", "Dirichlet", "Traction"},
                 "Robin: alpha F + beta u = gamma at an end of a 1-D body (primer eq. 1.1); "
                 "Dirichlet: a prescribed displacement component on grid nodes (rollers, "
-                "clamps, platens)",
+                "clamps, platens); Traction: a dead load on part of a 2-D body's boundary",
                 true);
   valid.sublist("[Type=Robin]").setParameters(RobinEnd::validParameters());
   valid.sublist("[Type=Dirichlet]").setParameters(DirichletNodes<2>::validParameters());
+  auto& traction = valid.sublist("[Type=Traction]");
+  declareString(traction, "Body", "block", "The body whose boundary is loaded", true);
+  traction.setParameters(EdgeTraction::validParameters());
   return valid;
 }
 
@@ -46,7 +50,7 @@ std::shared_ptr<Contribution<1>> robinEnd(const std::string& name, const Teuchos
 template <int Dim>
 std::vector<std::shared_ptr<Contribution<Dim>>> createBoundaryConditions(
     const Teuchos::ParameterList& deck, const Bodies<Dim>& bodies, const GridGeometry<Dim>& grid,
-    Kinematics kinematics) {
+    Method method, Kinematics kinematics) {
   std::vector<std::shared_ptr<Contribution<Dim>>> result;
   const auto& list = deck.sublist("Boundary Conditions");
   const double initialLoad = isStatic(deck.sublist("Time Integration")) ? 0.0 : 1.0;
@@ -58,18 +62,34 @@ std::vector<std::shared_ptr<Contribution<Dim>>> createBoundaryConditions(
       result.push_back(std::make_shared<DirichletNodes<Dim>>(name, p, grid, initialLoad));
       continue;
     }
+    const std::string path = "Boundary Conditions/" + name;
+    if (p.get<std::string>("Type") == "Traction") {
+      if constexpr (Dim == 2) {
+        const int b = bodies.find(p.get<std::string>("Body"));
+        if (b < 0)
+          throw InputError(path + "/Body", "no body called '" + p.get<std::string>("Body") + "'");
+        if (!isParticleMethod(method))
+          throw InputError(path + "/Type",
+                           "a traction acts on the faces of particle domains, which fem's Gauss "
+                           "points do not have: use mpm, gimp or cpdi");
+        result.push_back(
+            std::make_shared<EdgeTraction>(name, p, b, bodies.list()[b].shape, kinematics));
+        continue;
+      }
+      throw InputError(path + "/Type",
+                       "tractions are for 2-D bodies; a 1-D end force is a Robin condition");
+    }
     if constexpr (Dim == 1)
       result.push_back(robinEnd(name, p, bodies, kinematics, taken));
     else
-      throw InputError("Boundary Conditions/" + name + "/Type",
-                       "Robin ends are for 1-D bars; use Dirichlet on a 2-D grid");
+      throw InputError(path + "/Type", "Robin ends are for 1-D bars; use Dirichlet on a 2-D grid");
   }
   return result;
 }
 
 template std::vector<std::shared_ptr<Contribution<1>>> createBoundaryConditions<1>(
-    const Teuchos::ParameterList&, const Bodies<1>&, const GridGeometry<1>&, Kinematics);
+    const Teuchos::ParameterList&, const Bodies<1>&, const GridGeometry<1>&, Method, Kinematics);
 template std::vector<std::shared_ptr<Contribution<2>>> createBoundaryConditions<2>(
-    const Teuchos::ParameterList&, const Bodies<2>&, const GridGeometry<2>&, Kinematics);
+    const Teuchos::ParameterList&, const Bodies<2>&, const GridGeometry<2>&, Method, Kinematics);
 
 }  // namespace impm

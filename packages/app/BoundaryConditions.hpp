@@ -17,6 +17,6 @@ Teuchos::ParameterList boundaryConditionValidParameters();
 template <int Dim>
 std::vector<std::shared_ptr<Contribution<Dim>>> createBoundaryConditions(
     const Teuchos::ParameterList& deck, const Bodies<Dim>& bodies, const GridGeometry<Dim>& grid,
-    Kinematics kinematics);
+    Method method, Kinematics kinematics);
 
 }  // namespace impm

@@ -114,7 +114,7 @@ void Simulation<Dim>::setUp(const Teuchos::ParameterList& deck) {
                                         materials_, kinematics_ == Kinematics::updatedLagrangian);
   for (std::size_t m = 0; m < materials_.size(); ++m)
     materials_[m]->initialize(particles_, static_cast<int>(m));
-  conditions_ = createBoundaryConditions<Dim>(deck, *bodies_, grid, kinematics_);
+  conditions_ = createBoundaryConditions<Dim>(deck, *bodies_, grid, method_, kinematics_);
   if constexpr (Dim == 1) {
     for (const auto& c : conditions_) {
       auto robin = std::dynamic_pointer_cast<RobinEnd>(c);

@@ -18,8 +18,9 @@ class Run:
     """One impm process: wall time [s], peak memory of the largest process [MB], the Teuchos
     timers by name [s] and the rows of the history CSV."""
 
-    def __init__(self, wall, memory, timers, history):
+    def __init__(self, wall, memory, timers, history, rms=None):
         self.wall, self.memory, self.timers, self.history = wall, memory, timers, history
+        self.rms = rms  # the RMS displacement error impm reported, as printed
 
     def timer(self, name):
         return self.timers.get(name, 0.0)
@@ -62,7 +63,8 @@ def run_impm(impm, deck, sets, np=1, history=True, timeout=None):
         name = os.path.splitext(os.path.basename(deck))[0] + "_history.csv"
         rows = list(csv.DictReader(open(os.path.join(out, name))))
     shutil.rmtree(out)
-    return Run(wall, int(rss) / 1024.0, timers, rows)
+    rms = re.search(r"RMS displacement error (\S+)", r.stdout)
+    return Run(wall, int(rss) / 1024.0, timers, rows, rms.group(1) if rms else None)
 
 
 def median_run(runs, key):

@@ -1,4 +1,4 @@
-#include "app/Shape.hpp"
+#include "core/Shape.hpp"
 
 #include <algorithm>
 #include <cmath>
