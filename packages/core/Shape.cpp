@@ -88,6 +88,16 @@ bool Shape::contains(const double* x) const {
       return dx * dx + dy * dy <= radius_ * radius_;
     }
     case Kind::polygon: {
+      // On an edge (up to round-off): inside, as for the other shapes.
+      for (std::size_t i = 0, j = vertices_.size() - 1; i < vertices_.size(); j = i++) {
+        const auto &a = vertices_[i], &b = vertices_[j];
+        const double ex = b[0] - a[0], ey = b[1] - a[1];
+        const double px = x[0] - a[0], py = x[1] - a[1];
+        const double length2 = ex * ex + ey * ey;
+        const double along = px * ex + py * ey;
+        if (std::abs(ex * py - ey * px) <= 1e-12 * length2 && along >= 0 && along <= length2)
+          return true;
+      }
       // Even-odd rule: count the edges that a ray towards +x crosses.
       bool inside = false;
       for (std::size_t i = 0, j = vertices_.size() - 1; i < vertices_.size(); j = i++) {

@@ -82,6 +82,64 @@ TEST(Bodies, ABodyOutsideTheGridIsAnInputError) {
   }
 }
 
+// 2-D shapes: a rectangle on grid lines is filled exactly; a disk and a triangle get the
+// sub-cells whose centres they contain, counted here independently of the code.
+Teuchos::ParameterList shapeDeck(const std::string& shape, int perCell) {
+  Teuchos::ParameterList deck;
+  auto& mat = deck.sublist("Materials").sublist("rubber");
+  mat.set("Model", std::string("neo-hookean")), mat.set("E", 1.0), mat.set("nu", 0.0);
+  mat.set("Density", 2.0);
+  validateParameters(mat, materialValidParameters());
+  auto& b = deck.sublist("Bodies").sublist("body");
+  b.set("Material", std::string("rubber"));
+  b.set("Shape", shape);
+  b.set("Particles Per Cell", perCell);
+  const auto A = [](std::vector<double> v) { return Teuchos::Array<double>(v); };
+  if (shape == "rectangle")
+    b.set("Lower Corner", A({0.25, 0.5})), b.set("Upper Corner", A({0.75, 1.0}));
+  else if (shape == "disk")
+    b.set("Center", A({0.5, 0.5})), b.set("Radius", 0.3);
+  else
+    b.set("Vertices", A({0.1, 0.1, 0.9, 0.1, 0.1, 0.9}));  // a right triangle
+  validateParameters(b, bodyValidParameters());
+  return deck;
+}
+
+TEST(Bodies, ShapesFill2DCellsOnSubCells) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  NodeOwnership<2> own(makeGridGeometry<2>({0.0, 0.0}, {1.0, 1.0}, {8, 8}), comm);
+  const double sub = 1.0 / 24;  // 3 x 3 particles per cell of 1/8
+  for (const std::string shape : {"rectangle", "disk", "polygon"}) {
+    const auto deck = shapeDeck(shape, 3);
+    Bodies<2> bodies(deck, {"rubber"}, own.grid());
+    std::vector<std::shared_ptr<Material<2>>> mats = {
+        createMaterial<2>("rubber", deck.sublist("Materials").sublist("rubber"))};
+    const auto ps =
+        bodies.createParticles(Method::cpdi, own.decomposition(), comm->getRank(), mats, true);
+    GlobalId expected = 0;
+    for (int j = 0; j < 24; ++j)
+      for (int i = 0; i < 24; ++i) {
+        const double x = (i + 0.5) * sub, y = (j + 0.5) * sub;
+        if (shape == "rectangle")
+          expected += x >= 0.25 && x <= 0.75 && y >= 0.5 && y <= 1.0;
+        else if (shape == "disk")
+          expected += (x - 0.5) * (x - 0.5) + (y - 0.5) * (y - 0.5) <= 0.09;
+        else
+          expected += x >= 0.1 && y >= 0.1 && x + y <= 1.0;
+      }
+    GlobalId count = 0;
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, GlobalId(ps.size()), Teuchos::outArg(count));
+    EXPECT_EQ(count, expected) << shape;
+    auto V = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.volume);
+    auto r = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.domain);
+    for (std::size_t p = 0; p < ps.size(); ++p) {
+      EXPECT_NEAR(V(p), sub * sub, 1e-15);
+      EXPECT_NEAR(r(p, 0, 0), sub / 2, 1e-15);
+      EXPECT_NEAR(r(p, 1, 1), sub / 2, 1e-15);
+    }
+  }
+}
+
 TEST(Output, ParticlesAreGatheredSortedById) {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   NodeOwnership<1> own(makeGridGeometry<1>({0.0}, {1.0}, {10}), comm);

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -226,6 +227,109 @@ TEST(MaterialFactory, ModelOfAnotherDimensionIsRejected) {
   p.set("E", 1.0);
   validateParameters(p, materialValidParameters());
   EXPECT_THROW(createMaterial<2>("m", p), InputError);
+}
+
+}  // namespace
+}  // namespace impm
+
+namespace impm {
+namespace {
+
+// 2-D laws: at a general F (stretch, shear, rotation), A = dP/dF and P = dW/dF by central
+// differences of the values the material returns (step 1e-6); at F = I, P = 0, W = 0 and
+// the small-strain tangent lambda d_ab d_cd + mu (d_ac d_bd + d_ad d_bc).
+class EveryPlaneStrainLaw : public ::testing::TestWithParam<std::string> {};
+
+struct PlaneStrainValues {
+  std::vector<std::array<double, 4>> P;
+  std::vector<std::array<double, 16>> A;
+  std::vector<double> W, stressZZ;
+};
+
+PlaneStrainValues evaluate2D(const std::string& model,
+                             const std::vector<std::array<double, 4>>& F) {
+  Teuchos::ParameterList p;
+  p.set("Model", model);
+  p.set("E", 1000.0);
+  p.set("nu", 0.3);
+  validateParameters(p, materialValidParameters());
+  auto m = createMaterial<2>("m", p);
+  const std::size_t n = F.size();
+  ParticleSet<2> ps(n);
+  ParticleSet<2>::Tensors Fv("F", n), P("P", n);
+  Material<2>::Tangents A("A", n);
+  ParticleSet<2>::Scalars W("W", n), szz("szz", n);
+  auto Fh = Kokkos::create_mirror_view(Fv);
+  for (std::size_t q = 0; q < n; ++q)
+    for (int k = 0; k < 4; ++k)
+      Fh(q, k / 2, k % 2) = F[q][k];
+  Kokkos::deep_copy(Fv, Fh);
+  m->firstPiola(ps, Fv, 0, P, A);
+  m->energyDensity(ps, Fv, 0, W);
+  m->outOfPlaneStress(ps, Fv, 0, szz);
+  auto Ph = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), P);
+  auto Ah = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), A);
+  auto Wh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), W);
+  auto Sh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), szz);
+  PlaneStrainValues v;
+  for (std::size_t q = 0; q < n; ++q) {
+    std::array<double, 4> Pq;
+    std::array<double, 16> Aq;
+    for (int k = 0; k < 4; ++k)
+      Pq[k] = Ph(q, k / 2, k % 2);
+    for (int k = 0; k < 16; ++k)
+      Aq[k] = Ah(q, k / 8, (k / 4) % 2, (k / 2) % 2, k % 2);
+    v.P.push_back(Pq), v.A.push_back(Aq), v.W.push_back(Wh(q)), v.stressZZ.push_back(Sh(q));
+  }
+  return v;
+}
+
+TEST_P(EveryPlaneStrainLaw, TangentAndEnergyAreConsistentWithTheStress) {
+  const std::array<double, 4> F = {1.12, 0.23, -0.17, 0.86};  // J = 1.0023
+  const double h = 1e-6;
+  std::vector<std::array<double, 4>> Fs = {F};
+  for (int cd = 0; cd < 4; ++cd)
+    for (double s : {-1.0, 1.0}) {
+      auto G = F;
+      G[cd] += s * h;
+      Fs.push_back(G);
+    }
+  const auto v = evaluate2D(GetParam(), Fs);
+  for (int cd = 0; cd < 4; ++cd) {
+    const std::size_t minus = 1 + 2 * cd, plus = 2 + 2 * cd;
+    for (int ab = 0; ab < 4; ++ab)
+      EXPECT_NEAR(v.A[0][ab * 4 + cd], (v.P[plus][ab] - v.P[minus][ab]) / (2 * h), 1e-5)
+          << GetParam() << ": A[" << ab << "][" << cd << "]";
+    EXPECT_NEAR(v.P[0][cd], (v.W[plus] - v.W[minus]) / (2 * h), 1e-5) << GetParam();
+  }
+  const auto rest = evaluate2D(GetParam(), {{1.0, 0.0, 0.0, 1.0}});
+  const double mu = 1000 / 2.6, lambda = 300 / (1.3 * 0.4);
+  for (int k = 0; k < 4; ++k)
+    EXPECT_NEAR(rest.P[0][k], 0.0, 1e-12);
+  EXPECT_NEAR(rest.W[0], 0.0, 1e-12);
+  EXPECT_NEAR(rest.stressZZ[0], 0.0, 1e-12);
+  for (int k = 0; k < 16; ++k) {
+    const int a = k / 8, b = (k / 4) % 2, c = (k / 2) % 2, d = k % 2;
+    const double expected =
+        lambda * (a == b) * (c == d) + mu * ((a == c) * (b == d) + (a == d) * (b == c));
+    EXPECT_NEAR(rest.A[0][k], expected, 1e-9) << GetParam() << " at F = I, entry " << k;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Material, EveryPlaneStrainLaw,
+                         ::testing::Values("linear-elastic", "neo-hookean"));
+
+TEST(NeoHookean, UniaxialPlaneStrainClosedForm) {
+  // F = diag(s, 1): P_xx = mu (s - 1/s) + lambda ln s / s, sigma_zz = lambda ln s / s.
+  const double s = 0.8, mu = 1000 / 2.6, lambda = 300 / (1.3 * 0.4);
+  const auto v = evaluate2D("neo-hookean", {{s, 0.0, 0.0, 1.0}});
+  EXPECT_NEAR(v.P[0][0], mu * (s - 1 / s) + lambda * std::log(s) / s, 1e-12 * 1000);
+  EXPECT_NEAR(v.P[0][3], lambda * std::log(s), 1e-12 * 1000);
+  EXPECT_NEAR(v.stressZZ[0], lambda * std::log(s) / s, 1e-12 * 1000);
+}
+
+TEST(NeoHookean, InvertedParticleIsANumericalError) {
+  EXPECT_THROW(evaluate2D("neo-hookean", {{-0.5, 0.0, 0.0, 1.0}}), NumericalError);
 }
 
 }  // namespace
