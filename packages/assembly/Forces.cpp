@@ -41,7 +41,7 @@ void addExternalForce(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& 
 
 template <int Dim>
 void addTangent(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryRows,
-                const Kokkos::View<LO*>& entryCols, const ParticleSet<Dim>& particles,
+                const Kokkos::View<LO**>& entryCols, const ParticleSet<Dim>& particles,
                 const Tangents<Dim>& An, const LocalMatrix& K) {
   auto rowPtr = map.rowPtr;
   auto grad = map.grad;
@@ -62,7 +62,7 @@ void addTangent(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryR
                 for (int b = 0; b < Dim; ++b)
                   for (int d = 0; d < Dim; ++d)
                     s += grad(ki, b) * An(p, a, b, c, d) * grad(kj, d);
-                cols[c] = entryCols(kj) + c;
+                cols[c] = entryCols(kj, c);
                 vals[c] = w * s;
               }
               K.sumIntoValues(row, cols, Dim, vals, false, true);
@@ -84,10 +84,10 @@ template void addExternalForce<2>(const ParticleGridMap<2>&, const Kokkos::View<
                                   const ParticleSet<2>::Vectors&, double,
                                   const LocalValuesMutable&);
 template void addTangent<1>(const ParticleGridMap<1>&, const Kokkos::View<LO*>&,
-                            const Kokkos::View<LO*>&, const ParticleSet<1>&, const Tangents<1>&,
+                            const Kokkos::View<LO**>&, const ParticleSet<1>&, const Tangents<1>&,
                             const LocalMatrix&);
 template void addTangent<2>(const ParticleGridMap<2>&, const Kokkos::View<LO*>&,
-                            const Kokkos::View<LO*>&, const ParticleSet<2>&, const Tangents<2>&,
+                            const Kokkos::View<LO**>&, const ParticleSet<2>&, const Tangents<2>&,
                             const LocalMatrix&);
 
 }  // namespace impm

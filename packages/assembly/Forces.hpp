@@ -27,7 +27,7 @@ void addExternalForce(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& 
 // Rows are overlap-map indices, columns indices in the matrix's column map.
 template <int Dim>
 void addTangent(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryRows,
-                const Kokkos::View<LO*>& entryCols, const ParticleSet<Dim>& particles,
+                const Kokkos::View<LO**>& entryCols, const ParticleSet<Dim>& particles,
                 const Tangents<Dim>& An, const LocalMatrix& K);
 
 }  // namespace impm

@@ -57,7 +57,7 @@ void addInertiaForce(MassType type, const ParticleGridMap<Dim>& map,
 
 template <int Dim>
 void addMassMatrix(MassType type, double scale, const ParticleGridMap<Dim>& map,
-                   const Kokkos::View<LO*>& entryRows, const Kokkos::View<LO*>& entryCols,
+                   const Kokkos::View<LO*>& entryRows, const Kokkos::View<LO**>& entryCols,
                    const typename ParticleSet<Dim>::Scalars& mass, const LocalMatrix& K) {
   auto rowPtr = map.rowPtr;
   auto phi = map.phi;
@@ -69,13 +69,13 @@ void addMassMatrix(MassType type, double scale, const ParticleGridMap<Dim>& map,
           for (int d = 0; d < Dim; ++d) {
             const LO row = entryRows(ki) + d;
             if (!consistent) {
-              const LO col = entryCols(ki) + d;
+              const LO col = entryCols(ki, d);
               const double value = scale * mass(p) * phi(ki);
               K.sumIntoValues(row, &col, 1, &value, false, true);
               continue;
             }
             for (std::size_t kj = rowPtr(p); kj < rowPtr(p + 1); ++kj) {
-              const LO col = entryCols(kj) + d;
+              const LO col = entryCols(kj, d);
               const double value = scale * mass(p) * phi(ki) * phi(kj);
               K.sumIntoValues(row, &col, 1, &value, false, true);
             }
@@ -118,7 +118,7 @@ void gridToParticleVelocity(const ParticleGridMap<Dim>& map, const Kokkos::View<
                                    const ParticleSet<D>::Scalars&, const LocalValues&,            \
                                    const LocalValuesMutable&);                                    \
   template void addMassMatrix<D>(MassType, double, const ParticleGridMap<D>&,                     \
-                                 const Kokkos::View<LO*>&, const Kokkos::View<LO*>&,              \
+                                 const Kokkos::View<LO*>&, const Kokkos::View<LO**>&,             \
                                  const ParticleSet<D>::Scalars&, const LocalMatrix&);             \
   template void gridToParticleVelocity<D>(const ParticleGridMap<D>&, const Kokkos::View<LO*>&,    \
                                           const LocalValues&, const LocalValues&,                 \

@@ -34,7 +34,7 @@ void addInertiaForce(MassType type, const ParticleGridMap<Dim>& map,
 // K += scale M (rows: overlap-map indices, columns: the matrix's column map).
 template <int Dim>
 void addMassMatrix(MassType type, double scale, const ParticleGridMap<Dim>& map,
-                   const Kokkos::View<LO*>& entryRows, const Kokkos::View<LO*>& entryCols,
+                   const Kokkos::View<LO*>& entryRows, const Kokkos::View<LO**>& entryCols,
                    const typename ParticleSet<Dim>::Scalars& mass, const LocalMatrix& K);
 
 // Particle velocities and accelerations from the grid after a step:

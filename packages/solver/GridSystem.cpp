@@ -68,7 +68,8 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
       loadFactor_(loadFactor),
       map_(buildMapCollectively(ownership, method, kinematics, particles)),
       dofs_(numberUnknowns(ownership, map_, contributions, firstExtra_)) {
-  entryDofs_ = impm::entryDofs(map_, *dofs_.overlapMap());
+  // A failure on one rank must stop every rank (the next steps are collective).
+  collectively(*ownership.comm(), [&] { entryDofs_ = impm::entryDofs(map_, *dofs_.overlapMap()); });
   std::vector<std::pair<GO, GO>> couplings;
   for (std::size_t c = 0; c < contributions_.size(); ++c)
     contributions_[c]->couplings(context(static_cast<int>(c)), couplings);
@@ -77,7 +78,8 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
     IMPM_TIMER("graph");
     graph_ = buildGraph(map_, entryDofs_, dofs_, couplings);
   }
-  entryCols_ = impm::entryDofs(map_, *graph_->getColMap());
+  collectively(*ownership.comm(),
+               [&] { entryCols_ = impm::entryColumns(map_, *graph_->getColMap()); });
   importer_ = Teuchos::rcp(new Import(dofs_.ownedMap(), dofs_.overlapMap()));
   nodalMask_ = Teuchos::rcp(new Vector(dofs_.ownedMap()));
   {

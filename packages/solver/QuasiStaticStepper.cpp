@@ -6,6 +6,7 @@
 
 #include "assembly/Energy.hpp"
 #include "core/Errors.hpp"
+#include "core/Migration.hpp"
 #include "core/Timers.hpp"
 #include "solver/ParticleAdvance.hpp"
 
@@ -73,6 +74,10 @@ void QuasiStaticStepper<Dim>::run(const StepCallback<Dim>& onStep) {
     record.externalWork = bodyWork_ + contributionWork<Dim>(ctx_.contributions);
     attempts = 0;
     onStep(record, StepGrid<Dim>{*system, *du, nullptr, nullptr});
+    if (ctx_.kinematics == Kinematics::updatedLagrangian) {
+      IMPM_TIMER("migration");  // particles live on the rank that owns their cell
+      migrateToOwners(ctx_.particles, ctx_.ownership.decomposition(), comm);
+    }
     increment = std::min(2 * increment, nominal);  // grow back after a cutback
   }
 }

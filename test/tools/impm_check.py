@@ -165,7 +165,7 @@ def uniform(args):
 
 
 def ranks(args):
-    results = {}
+    results, conserved_failures = {}, []
     for np in args.np:
         out = tempfile.mkdtemp(prefix="impm-np%d-" % np, dir=".")
         r = run_impm(args, args.deck, out, ["Solver/Print Iterations=false"] + args.set, np)
@@ -173,31 +173,42 @@ def ranks(args):
             print(r.stdout, r.stderr)
             sys.exit("impm failed on %d ranks" % np)
         results[np] = read_csv(os.path.join(out, stem(args.deck) + "_particles.csv"))
+        history = read_csv(os.path.join(out, stem(args.deck) + "_history.csv"))
         shutil.rmtree(out)
+        for c in args.conserved:
+            values = [float(r[c]) for r in history]
+            drift = max(abs(v - values[0]) for v in values) / max(abs(values[0]), 1e-300)
+            print("%d ranks: %s changes by %.2e relative over %d steps" % (np, c, drift, len(values) - 1))
+            if drift > 1e-13:
+                conserved_failures.append("%s not conserved on %d ranks: relative change %.2e"
+                                          % (c, np, drift))
     base_np = args.np[0]
     base = results[base_np]
-    failures = []
+    failures = conserved_failures
     columns = list(base[0].keys())
     for np in args.np[1:]:
         other = results[np]
         if len(other) != len(base):
             failures.append("%d particles on %d ranks, %d on %d" % (len(other), np, len(base), base_np))
             continue
-        worst = 0.0
+        worst, skipped = 0.0, []
         for c in columns:
             a = [float(row[c]) for row in base]
             b = [float(row[c]) for row in other]
             scale = max(max(abs(v) for v in a), 1e-300)
             absolute = max(abs(x - y) for x, y in zip(a, b))
             diff = absolute / scale
-            if absolute <= args.atol:  # a column of round-off (a zero shear, say)
+            if scale <= args.atol and absolute <= args.atol:  # a zero column (u_x of P1, say)
+                skipped.append(c)
                 continue
             worst = max(worst, diff)
             if diff > args.rtol:
                 failures.append("column %s differs by %.3e (relative to its largest value) between "
                                 "%d and %d ranks" % (c, diff, base_np, np))
-        print("%d ranks vs %d: largest relative difference %.3e over %d particles"
-              % (np, base_np, worst, len(base)))
+        print("%d ranks vs %d: largest relative difference %.3e over %d particles%s"
+              % (np, base_np, worst, len(base),
+                 "; columns of round-off (|values| <= %g): %s" % (args.atol, " ".join(skipped))
+                 if skipped else ""))
     for f in failures:
         print("FAIL:", f)
     sys.exit(1 if failures else 0)
@@ -367,7 +378,10 @@ def main():
     r.add_argument("--np", type=int, nargs="+", required=True)
     r.add_argument("--rtol", type=float, default=1e-10)
     r.add_argument("--atol", type=float, default=0.0,
-                   help="differences up to this are round-off whatever the column's scale")
+                   help="a column whose values all stay below this is round-off (a zero "
+                        "shear, say) and is compared absolutely")
+    r.add_argument("--conserved", nargs="+", default=[],
+                   help="history columns that must stay constant to 1e-13 relative")
     r.add_argument("--set", action="append", default=[])
 
     f = sub.add_parser("fails")
