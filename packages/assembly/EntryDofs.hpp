@@ -13,29 +13,6 @@
 namespace impm {
 
 template <int Dim, class Space = DefaultExecSpace>
-Kokkos::View<LO*, typename Space::memory_space> entryDofs(const ParticleGridMap<Dim, Space>& map,
-                                                          const Map& overlap) {
-  Kokkos::View<LO*, typename Space::memory_space> lids("entry dofs", map.numEntries());
-  auto local = overlap.getLocalMap();
-  auto node = map.node;
-  int misplaced = 0;
-  Kokkos::parallel_reduce(
-      "impm::entryDofs", RangePolicy<Space>(0, map.numEntries()),
-      KOKKOS_LAMBDA(const std::size_t k, int& bad) {
-        lids(k) = local.getLocalElement(node(k) * Dim);
-        for (int d = 1; d < Dim; ++d)
-          if (local.getLocalElement(node(k) * Dim + d) != lids(k) + d)
-            ++bad;
-        if (lids(k) == Tpetra::Details::OrdinalTraits<LO>::invalid())
-          ++bad;
-      },
-      misplaced);
-  if (misplaced)
-    throw std::logic_error("node components are not consecutive in the DOF map");
-  return lids;
-}
-
-template <int Dim, class Space = DefaultExecSpace>
 Kokkos::View<LO**, typename Space::memory_space> entryColumns(
     const ParticleGridMap<Dim, Space>& map, const Map& columns) {
   Kokkos::View<LO**, typename Space::memory_space> lids("entry columns", map.numEntries(), Dim);
@@ -53,7 +30,27 @@ Kokkos::View<LO**, typename Space::memory_space> entryColumns(
       },
       missing);
   if (missing)
-    throw std::logic_error("a particle's node is missing from the Jacobian's column map");
+    throw std::logic_error("a particle's node is missing from the map of its unknowns");
+  return lids;
+}
+
+template <int Dim, class Space = DefaultExecSpace>
+Kokkos::View<LO*, typename Space::memory_space> entryDofs(const ParticleGridMap<Dim, Space>& map,
+                                                          const Map& overlap) {
+  const auto all = entryColumns(map, overlap);
+  Kokkos::View<LO*, typename Space::memory_space> lids("entry dofs", map.numEntries());
+  int misplaced = 0;
+  Kokkos::parallel_reduce(
+      "impm::entryDofs", RangePolicy<Space>(0, map.numEntries()),
+      KOKKOS_LAMBDA(const std::size_t k, int& bad) {
+        lids(k) = all(k, 0);
+        for (int d = 1; d < Dim; ++d)
+          if (all(k, d) != lids(k) + d)
+            ++bad;
+      },
+      misplaced);
+  if (misplaced)
+    throw std::logic_error("node components are not consecutive in the DOF map");
   return lids;
 }
 
