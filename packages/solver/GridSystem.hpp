@@ -93,7 +93,7 @@ class GridSystem : public ResidualModel {
   ParticleGridMap<Dim> map_;
   std::vector<int> firstExtra_;
   DofMap<Dim> dofs_;
-  Kokkos::View<LO*> entryDofs_;  // overlap-map index of each map entry's node
+  Kokkos::View<LO*> entryDofs_;   // overlap-map index of each map entry's node
   Kokkos::View<LO**> entryCols_;  // each component's index in the Jacobian's column map
   Teuchos::RCP<FECrsGraph> graph_;
   Teuchos::RCP<const Import> importer_;

@@ -14,33 +14,21 @@ continuum answer (rho = A = 1, c = 10, v0 = 0.1, L = 1):
 """
 
 import argparse
-import csv
-import os
 import shutil
 import statistics
-import subprocess
 import sys
-import tempfile
+
+from impmrun import run_deck
 
 V0, C, L, ENERGY = 0.1, 10.0, 1.0, 0.01
 
 
 def run(args, sets, keep=False):
-    out = tempfile.mkdtemp(prefix="impm-c1-", dir=".")
-    cmd = [args.impm, "--output-dir", out]
-    for s in sets + args.set:
-        cmd += ["--set", s]
-    cmd.append(args.deck)
-    r = subprocess.run(cmd, capture_output=True, text=True)
-    if r.returncode != 0:
-        print(r.stdout, r.stderr)
-        sys.exit("impm failed")
-    stem = os.path.splitext(os.path.basename(args.deck))[0]
-    history = list(csv.DictReader(open(os.path.join(out, stem + "_history.csv"))))
-    particles = list(csv.DictReader(open(os.path.join(out, stem + "_particles.csv"))))
+    out = run_deck(args.impm, args.deck, sets + args.set, "impm-c1-")
+    history, particles = out.table("_history.csv"), out.table("_particles.csv")
     if keep and args.keep_history:
-        shutil.copy(os.path.join(out, stem + "_history.csv"), args.keep_history)
-    shutil.rmtree(out)
+        shutil.copy(out.path("_history.csv"), args.keep_history)
+    out.remove()
     return history, particles
 
 

@@ -15,13 +15,12 @@ Uses Debian's python3 with python3-numpy, python3-netcdf4 and python3-matplotlib
 
 import argparse
 import csv
-import os
-import subprocess
 import sys
-import tempfile
 
 import netCDF4
 import numpy as np
+
+from impmrun import run_deck
 
 
 def exodus(path):
@@ -53,14 +52,8 @@ def main():
     p.add_argument("--plot", help="PNG of the energies against time")
     args = p.parse_args()
 
-    out = tempfile.mkdtemp(prefix="impm-disks-", dir=".")
-    cmd = [args.impm, "--output-dir", out]
-    for s in args.set:
-        cmd += ["--set", s]
-    r = subprocess.run(cmd + [args.deck], capture_output=True, text=True)
-    if r.returncode != 0:
-        sys.exit("impm failed:\n" + r.stdout + r.stderr)
-    prefix = os.path.join(out, os.path.splitext(os.path.basename(args.deck))[0])
+    out = run_deck(args.impm, args.deck, args.set, "impm-disks-")
+    prefix = out.path("")
     failures = []
 
     points, pnodal, pelem = exodus(prefix + "_particles.exo")
@@ -128,6 +121,7 @@ def main():
         ax.grid(alpha=0.3)
         fig.tight_layout()
         fig.savefig(args.plot, dpi=100)
+    out.remove()
     for f in failures:
         print("FAIL:", f)
     sys.exit(1 if failures else 0)

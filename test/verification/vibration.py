@@ -18,13 +18,10 @@ theory predicts; the growth rate of the primer update.
 """
 
 import argparse
-import csv
 import math
-import os
-import shutil
-import subprocess
 import sys
-import tempfile
+
+from impmrun import run_deck
 
 E, RHO, L, V0 = 100.0, 1.0, 25.0, 0.1
 C = math.sqrt(E / RHO)
@@ -33,19 +30,9 @@ W = K * C
 
 
 def run(args, sets):
-    out = tempfile.mkdtemp(prefix="impm-v1-", dir=".")
-    cmd = [args.impm, "--output-dir", out]
-    for s in sets:
-        cmd += ["--set", s]
-    cmd.append(args.deck)
-    r = subprocess.run(cmd, capture_output=True, text=True)
-    if r.returncode != 0:
-        print(r.stdout, r.stderr)
-        sys.exit("impm failed")
-    stem = os.path.splitext(os.path.basename(args.deck))[0]
-    history = list(csv.DictReader(open(os.path.join(out, stem + "_history.csv"))))
-    particles = list(csv.DictReader(open(os.path.join(out, stem + "_particles.csv"))))
-    shutil.rmtree(out)
+    out = run_deck(args.impm, args.deck, sets, "impm-v1-")
+    history, particles = out.table("_history.csv"), out.table("_particles.csv")
+    out.remove()
     return history, particles
 
 
