@@ -68,6 +68,7 @@ Simulation<Dim>::Simulation(const Teuchos::ParameterList& deck, const std::strin
                             const std::string& outputDirectory,
                             const Teuchos::RCP<const Comm>& comm)
     : comm_(comm), deck_(deck), deckFile_(deckFile), outputDirectory_(outputDirectory) {
+  IMPM_TIMER("set-up");
   // Local checks first, agreed on by every rank; then the collective set-up.
   collectively(*comm_, [&] { setUp(deck_); });
   collectively(*comm_, [&] { checkExplicitTimeStep(); });

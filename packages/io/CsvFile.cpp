@@ -1,5 +1,6 @@
 #include "io/CsvFile.hpp"
 
+#include <charconv>
 #include <cstdio>
 #include <stdexcept>
 
@@ -12,6 +13,24 @@ FILE* openOrThrow(const std::string& path, const char* mode) {
   if (!f)
     throw std::runtime_error("cannot write " + path);
   return f;
+}
+
+// Writes x in the shortest form that reads back to the same double (std::to_chars without a
+// precision): exact like "%.17g", several times faster, and shorter.
+void writeNumber(FILE* f, double x) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, x).ptr;
+  std::fwrite(text, 1, end - text, f);
+}
+
+template <class Value>
+void writeRow(FILE* f, std::size_t n, const Value& value) {
+  for (std::size_t c = 0; c < n; ++c) {
+    if (c)
+      std::fputc(',', f);
+    writeNumber(f, value(c));
+  }
+  std::fputc('\n', f);
 }
 
 void writeHeader(FILE* f, const std::vector<std::string>& columns) {
@@ -33,9 +52,7 @@ void CsvHistory::append(const std::vector<double>& row) const {
   if (row.size() != columns_.size())
     throw std::logic_error("history row has the wrong length");
   FILE* f = openOrThrow(path_, "a");
-  for (std::size_t c = 0; c < row.size(); ++c)
-    std::fprintf(f, "%s%.17g", c ? "," : "", row[c]);
-  std::fputc('\n', f);
+  writeRow(f, row.size(), [&](std::size_t c) { return row[c]; });
   std::fclose(f);
 }
 
@@ -44,11 +61,8 @@ void writeCsvTable(const std::string& path, const std::vector<std::string>& colu
   FILE* f = openOrThrow(path, "w");
   writeHeader(f, columns);
   const std::size_t rows = values.empty() ? 0 : values[0].size();
-  for (std::size_t r = 0; r < rows; ++r) {
-    for (std::size_t c = 0; c < values.size(); ++c)
-      std::fprintf(f, "%s%.17g", c ? "," : "", values[c][r]);
-    std::fputc('\n', f);
-  }
+  for (std::size_t r = 0; r < rows; ++r)
+    writeRow(f, values.size(), [&](std::size_t c) { return values[c][r]; });
   std::fclose(f);
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // Comma-separated tables: a history file that grows by one row per step (opened and closed
 // for every row, so it is complete up to the last finished step), and whole tables written
-// at once.  Numbers are written with 17 significant digits, so they read back exactly.
+// at once.  Numbers are written in the shortest form that reads back exactly.
 
 #include <string>
 #include <vector>
