@@ -17,6 +17,7 @@
 #include "app/Simulation.hpp"
 #include "core/Collective.hpp"
 #include "core/Errors.hpp"
+#include "core/MemoryPolicy.hpp"
 #include "core/Parameters.hpp"
 #include "io/InputDeck.hpp"
 
@@ -90,6 +91,7 @@ int runDeck(const Teuchos::ParameterList& deck, const Arguments& args,
 }  // namespace
 
 int main(int argc, char** argv) {
+  impm::keepFreedMemory();  // before any allocation
   Tpetra::ScopeGuard scope(&argc, &argv);
   auto comm = Tpetra::getDefaultComm();
   const bool root = comm->getRank() == 0;

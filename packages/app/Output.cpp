@@ -17,8 +17,9 @@ Teuchos::ParameterList outputValidParameters() {
   declareBool(valid, "Exodus", true, "Write Exodus files of the grid and the particles");
   declareBool(valid, "CSV", true, "Write the particle table as CSV");
   declareBool(valid, "Timers", false,
-              "Print the wall-clock time of each phase (map, graph, residual, Jacobian, Newton "
-              "solve, particle update, output) at the end, over all ranks");
+              "Print the wall-clock time of each phase (set-up, particle-grid map, graph, "
+              "residual, Jacobian, Newton solve, particle update, migration, output) at the end, "
+              "over all ranks");
   return valid;
 }
 
@@ -273,22 +274,37 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
                                                exodusElementVariables<Dim>(), globalNames);
 }
 
-template <int Dim>
-std::vector<std::array<double, 2>> Output<Dim>::corners(const ParticleTable& table, std::size_t p,
-                                                        bool reference) const {
+namespace {
+
+// The columns that place the domain corners, looked up by name once per table (not once per
+// particle: a million particles made the lookups a visible part of the output phase).
+struct CornerColumns {
+  // isBox: gimp's axis-aligned domains, else cpdi's parallelograms.
+  CornerColumns(const ParticleTable& t, bool reference, bool isBox)
+      : cx(t.column(reference ? "X" : "x")),
+        cy(t.column(reference ? "Y" : "y")),
+        r1x(t.column(reference ? "r01_x" : "r1_x")),
+        r1y(t.column(reference ? "r01_y" : "r1_y")),
+        r2x(t.column(reference ? "r02_x" : "r2_x")),
+        r2y(t.column(reference ? "r02_y" : "r2_y")),
+        box(isBox) {}
   // Counter-clockwise: (-,-), (+,-), (+,+), (-,+) in the half-vectors r1, r2.
-  const std::string r = reference ? "r0" : "r";
-  const double cx = table.column(reference ? "X" : "x")[p];
-  const double cy = table.column(reference ? "Y" : "y")[p];
-  double r1[2] = {table.column(r + "1_x")[p], table.column(r + "1_y")[p]};
-  double r2[2] = {table.column(r + "2_x")[p], table.column(r + "2_y")[p]};
-  if (domains_ == Domains::box)  // gimp integrates over the box of half-widths r1_x, r2_y
-    r1[1] = 0.0, r2[0] = 0.0;
-  std::vector<std::array<double, 2>> out;
-  for (const auto& s : {std::array<double, 2>{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
-    out.push_back({cx + s[0] * r1[0] + s[1] * r2[0], cy + s[0] * r1[1] + s[1] * r2[1]});
-  return out;
-}
+  std::array<std::array<double, 2>, 4> operator()(std::size_t p) const {
+    double r1[2] = {r1x[p], r1y[p]}, r2[2] = {r2x[p], r2y[p]};
+    if (box)  // gimp integrates over the box of half-widths r1_x, r2_y
+      r1[1] = 0.0, r2[0] = 0.0;
+    std::array<std::array<double, 2>, 4> out;
+    const double sign[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    for (int k = 0; k < 4; ++k)
+      out[k] = {cx[p] + sign[k][0] * r1[0] + sign[k][1] * r2[0],
+                cy[p] + sign[k][0] * r1[1] + sign[k][1] * r2[1]};
+    return out;
+  }
+  const std::vector<double>&cx, &cy, &r1x, &r1y, &r2x, &r2y;
+  bool box;
+};
+
+}  // namespace
 
 template <int Dim>
 ExodusMesh Output<Dim>::domainMesh(const ParticleTable& table) const {
@@ -297,8 +313,9 @@ ExodusMesh Output<Dim>::domainMesh(const ParticleTable& table) const {
   mesh.coords.resize(2);
   mesh.elementType = "QUAD4";
   mesh.nodesPerElement = 4;
+  const CornerColumns reference(table, true, domains_ == Domains::box);
   for (GlobalId p = 0; p < totalParticles_; ++p) {
-    for (const auto& c : corners(table, p, true)) {
+    for (const auto& c : reference(p)) {
       mesh.coords[0].push_back(c[0]), mesh.coords[1].push_back(c[1]);
       mesh.connectivity.push_back(static_cast<int>(mesh.coords[0].size()));
     }
@@ -311,8 +328,10 @@ template <int Dim>
 std::vector<std::vector<double>> Output<Dim>::domainDisplacements(
     const ParticleTable& table) const {
   std::vector<std::vector<double>> u(2);
+  const bool box = domains_ == Domains::box;
+  const CornerColumns current(table, false, box), reference(table, true, box);
   for (GlobalId p = 0; p < totalParticles_; ++p) {
-    const auto now = corners(table, p, false), then = corners(table, p, true);
+    const auto now = current(p), then = reference(p);
     for (int k = 0; k < 4; ++k)
       for (int d = 0; d < 2; ++d)
         u[d].push_back(now[k][d] - then[k][d]);

@@ -62,8 +62,6 @@ class Output {
   std::vector<std::string> files() const;
 
  private:
-  std::vector<std::array<double, 2>> corners(const ParticleTable& table, std::size_t p,
-                                             bool reference) const;
   ExodusMesh domainMesh(const ParticleTable& table) const;
   std::vector<std::vector<double>> domainDisplacements(const ParticleTable& table) const;
 
