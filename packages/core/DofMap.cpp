@@ -66,6 +66,10 @@ DofMap<Dim>::DofMap(const NodeOwnership<Dim>& ownership, std::vector<GlobalId> t
   }
   for (; nextExtra != myExtras.end(); ++nextExtra)
     owned.push_back(extraDof(nextExtra->second));
+  if (owned.empty()) {
+    padding_ = extraDof(numExtras_ + rank);
+    owned.push_back(padding_);
+  }
 
   // Overlap DOFs: the owned ones first, then touched nodes owned elsewhere.
   std::vector<GO> overlap = owned;

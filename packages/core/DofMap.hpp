@@ -10,6 +10,14 @@
 // nodes it acts on keeps incomplete factorisations (ILU) close to exact.
 // The overlap map is the owned map followed by the other DOFs this rank's contributions
 // reach, as Tpetra's FE assembly requires.
+//
+// A rank that would own no unknown (no particle near its part of the grid) owns one padding
+// unknown instead, numbered after the extras and fixed at zero by the grid system.  Empty
+// ranks are not allowed to reach the Krylov solver: Belos' Gram-Schmidt goes through Thyra to
+// Tpetra::MultiVector::multiply, whose local product KokkosBlas::gemm returns without writing
+// when the rank has no rows (Trilinos 13.2), so whatever the result buffer held is summed into
+// every rank's inner products.  Belos' own Tpetra adapter zeroes that buffer first; the
+// Thyra path NOX uses does not.  Found as NaNs in GMRES when freed memory was reused.
 
 #include <vector>
 
@@ -35,7 +43,10 @@ class DofMap {
 
   GO nodeDof(GlobalId node, int component) const { return node * Dim + component; }
   GO extraDof(int k) const { return numNodes_ * Dim + k; }
+  // Extra unknowns and the padding unknown: not displacement components of a node.
   bool isExtraDof(GO dof) const { return dof >= numNodes_ * Dim; }
+  // This rank's padding unknown (see above), or -1.
+  GO paddingDof() const { return padding_; }
   int numExtras() const { return numExtras_; }
   // Active nodes owned by this rank, ascending.
   const std::vector<GlobalId>& ownedActiveNodes() const { return ownedActive_; }
@@ -46,6 +57,7 @@ class DofMap {
   int numExtras_;
   std::vector<GlobalId> ownedActive_;
   GlobalId numActiveNodes_ = 0;
+  GO padding_ = -1;
   Teuchos::RCP<const Map> owned_, overlap_;
 };
 

@@ -73,6 +73,8 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
   std::vector<std::pair<GO, GO>> couplings;
   for (std::size_t c = 0; c < contributions_.size(); ++c)
     contributions_[c]->couplings(context(static_cast<int>(c)), couplings);
+  if (dofs_.paddingDof() >= 0)  // its row holds its diagonal only
+    couplings.emplace_back(dofs_.paddingDof(), dofs_.paddingDof());
   checkEveryActiveNodeIsIntegrated();
   {
     IMPM_TIMER("graph");
@@ -111,6 +113,8 @@ std::vector<std::pair<LO, double>> GridSystem<Dim>::constrainedRows() const {
   std::vector<std::pair<GO, double>> global;
   for (std::size_t c = 0; c < contributions_.size(); ++c)
     contributions_[c]->constraints(context(static_cast<int>(c)), global);
+  if (dofs_.paddingDof() >= 0)
+    global.emplace_back(dofs_.paddingDof(), 0.0);
   std::vector<std::pair<LO, double>> rows;
   const auto& owned = *dofs_.ownedMap();
   for (const auto& [gid, value] : global) {
