@@ -174,7 +174,7 @@ std::vector<std::vector<double>> exodusElementValues(const ParticleTable& table)
 
 template <int Dim>
 ParticleTable gatherParticles(const ParticleSet<Dim>& ps, const Teuchos::RCP<const Comm>& comm,
-                              GlobalId totalParticles) {
+                              GlobalId totalParticles, TableRows rows) {
   const auto columns = particleColumns<Dim>();
   const Mirrors<Dim> mirrors(ps);
   const std::size_t n = ps.size();
@@ -187,7 +187,10 @@ ParticleTable gatherParticles(const ParticleSet<Dim>& ps, const Teuchos::RCP<con
     for (std::size_t p = 0; p < n; ++p)
       data[p] = columns[c].read(mirrors, p);
   }
-  auto target = rootMap(totalParticles, comm);
+  const Teuchos::RCP<const Map> target =
+      rows == TableRows::onRoot ? rootMap(totalParticles, comm)
+                                : Teuchos::rcp<const Map>(new Map(
+                                      static_cast<Tpetra::global_size_t>(totalParticles), 0, comm));
   MultiVector gathered(target, columns.size());
   gathered.doImport(local, Import(source, target), Tpetra::INSERT);
   ParticleTable table;
@@ -342,15 +345,19 @@ std::vector<std::vector<double>> Output<Dim>::domainDisplacements(
 template <int Dim>
 void Output<Dim>::writeFields(double time, const ParticleSet<Dim>& particles,
                               const MultiVector& gridFields, const std::vector<double>& globals) {
-  const auto table = gatherParticles(particles, ownership_.comm(), totalParticles_);
-  const auto nodes = rootMap(ownership_.grid().numNodes(), ownership_.comm());
+  const auto& comm = ownership_.comm();
+  if (csv_) {  // every rank formats and writes a block of rows
+    const auto block = gatherParticles(particles, comm, totalParticles_, TableRows::inBlocks);
+    writeCsvTableCollectively(directory_ + "/" + prefix_ + "_particles.csv", *comm, block.names,
+                              block.columns);
+  }
+  if (!exodus_)
+    return;
+  const auto table = gatherParticles(particles, comm, totalParticles_);
+  const auto nodes = rootMap(ownership_.grid().numNodes(), comm);
   MultiVector gridOnRoot(nodes, gridFields.getNumVectors());
   gridOnRoot.doImport(gridFields, Import(gridFields.getMap(), nodes), Tpetra::INSERT);
   if (!root_)
-    return;
-  if (csv_)
-    writeCsvTable(directory_ + "/" + prefix_ + "_particles.csv", table.names, table.columns);
-  if (!exodus_)
     return;
   gridFile_->append(time, columnsOf(gridOnRoot, gridFields_), {}, globals);
   const auto elements = exodusElementValues<Dim>(table);
@@ -383,9 +390,9 @@ std::vector<std::string> Output<Dim>::files() const {
 }
 
 template ParticleTable gatherParticles<1>(const ParticleSet<1>&, const Teuchos::RCP<const Comm>&,
-                                          GlobalId);
+                                          GlobalId, TableRows);
 template ParticleTable gatherParticles<2>(const ParticleSet<2>&, const Teuchos::RCP<const Comm>&,
-                                          GlobalId);
+                                          GlobalId, TableRows);
 template class Output<1>;
 template class Output<2>;
 

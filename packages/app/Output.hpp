@@ -28,15 +28,20 @@ namespace impm {
 
 Teuchos::ParameterList outputValidParameters();
 
-// Particle fields on rank 0, sorted by id (empty elsewhere).  Collective.
+// Particle fields sorted by id, a row per particle.
 struct ParticleTable {
   std::vector<std::string> names;
   std::vector<std::vector<double>> columns;
   const std::vector<double>& column(const std::string& name) const;
 };
+// Where gatherParticles puts the rows: all on rank 0 (empty elsewhere), or in consecutive
+// blocks of ids of about equal size, rank 0 the first.
+enum class TableRows { onRoot, inBlocks };
+// Collective.
 template <int Dim>
 ParticleTable gatherParticles(const ParticleSet<Dim>& particles,
-                              const Teuchos::RCP<const Comm>& comm, GlobalId totalParticles);
+                              const Teuchos::RCP<const Comm>& comm, GlobalId totalParticles,
+                              TableRows rows = TableRows::onRoot);
 
 template <int Dim>
 class Output {

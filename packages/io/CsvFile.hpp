@@ -3,6 +3,8 @@
 // for every row, so it is complete up to the last finished step), and whole tables written
 // at once.  Numbers are written in the shortest form that reads back exactly.
 
+#include <Teuchos_Comm.hpp>
+
 #include <string>
 #include <vector>
 
@@ -21,8 +23,19 @@ class CsvHistory {
   std::vector<std::string> columns_;
 };
 
+// The rows of a table whose column c is values[c]: "v,v,...\n" per row.
+std::string formatCsvRows(const std::vector<std::vector<double>>& values);
+
 // columns[c] names values[c][row].
 void writeCsvTable(const std::string& path, const std::vector<std::string>& columns,
                    const std::vector<std::vector<double>>& values);
+
+// Collective: every rank passes a consecutive block of the table's rows, rank 0 the first
+// block, rank 1 the next, and so on (a rank may have none).  Each rank formats and writes its
+// own bytes at its offset (MPI-IO), so the file is the same as writeCsvTable's of the whole
+// table, and the work is shared by the ranks.
+void writeCsvTableCollectively(const std::string& path, const Teuchos::Comm<int>& comm,
+                               const std::vector<std::string>& columns,
+                               const std::vector<std::vector<double>>& localValues);
 
 }  // namespace impm

@@ -150,6 +150,19 @@ TEST(Output, ParticlesAreGatheredSortedById) {
   const auto ps =
       bodies.createParticles(Method::cpdi, own.decomposition(), comm->getRank(), mats, true);
   const auto table = gatherParticles(ps, comm, 20);
+  // In blocks: consecutive ids on every rank, the blocks in rank order and covering 0..19.
+  const auto block = gatherParticles(ps, comm, 20, TableRows::inBlocks);
+  const auto& blockId = block.column("id");
+  double rowsThrough = 0.0;  // inclusive scan: the rows up to and including this rank's
+  const double rows = static_cast<double>(blockId.size());
+  Teuchos::scan(*comm, Teuchos::REDUCE_SUM, rows, Teuchos::outArg(rowsThrough));
+  for (std::size_t k = 0; k < blockId.size(); ++k) {
+    EXPECT_EQ(blockId[k], rowsThrough - rows + k);
+    EXPECT_NEAR(block.column("X")[k], (blockId[k] + 0.5) / 20.0, 1e-15);
+  }
+  double total = 0.0;
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, rows, Teuchos::outArg(total));
+  EXPECT_EQ(total, 20.0);
   if (comm->getRank() != 0)
     return;
   const auto& id = table.column("id");

@@ -1,5 +1,5 @@
-// io: files read back exactly as written (CSV in the shortest exact form, Exodus through the exodusII
-// reading API, time steps appended one by one) and decks with typed overrides.
+// io: files read back exactly as written (CSV in the shortest exact form, Exodus through the
+// exodusII reading API, time steps appended one by one) and decks with typed overrides.
 
 #include <gtest/gtest.h>
 
@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "core/Errors.hpp"
@@ -46,6 +47,38 @@ TEST(Csv, HistoryAndTableReadBackExactly) {
   }
   EXPECT_THROW(h.append({1.0}), std::logic_error);
   std::remove(path.c_str());
+}
+
+TEST(Csv, CollectiveTableEqualsTheSerialOne) {
+  // Rank r holds rows [start_r, start_r + r + 1) of a table of 1 + 2 + ... + P rows (rank 0
+  // one row, rank 1 two, ...); the collective file must equal the serial file of the whole.
+  const auto comm = Teuchos::DefaultComm<int>::getComm();
+  const int rank = comm->getRank(), size = comm->getSize();
+  const auto value = [](int row, int c) { return c == 0 ? row : 1.0 / (row + 3.0) - c; };
+  std::vector<std::vector<double>> local(3), whole(3);
+  int row = 0;
+  for (int r = 0; r < size; ++r)
+    for (int k = 0; k <= r; ++k, ++row)
+      for (int c = 0; c < 3; ++c) {
+        whole[c].push_back(value(row, c));
+        if (r == rank)
+          local[c].push_back(value(row, c));
+      }
+  const std::string collective = "io_test_collective.csv";  // one file for all ranks
+  const std::string serial = scratch("serial.csv");
+  std::ofstream(collective) << std::string(100000, 'x');  // a longer old file is replaced
+  comm->barrier();
+  writeCsvTableCollectively(collective, *comm, {"row", "a", "b"}, local);
+  writeCsvTable(serial, {"row", "a", "b"}, whole);
+  const auto read = [](const std::string& path) {
+    std::ifstream in(path);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_EQ(read(collective), read(serial));
+  comm->barrier();
+  if (rank == 0)
+    std::remove(collective.c_str());
+  std::remove(serial.c_str());
 }
 
 TEST(Exodus, MeshVariablesAndTimeStepsReadBack) {
