@@ -65,9 +65,10 @@ Shape::Shape(const Teuchos::ParameterList& params, const std::string& path, int 
                            std::to_string(v.size()) + " numbers");
     lower_ = {v[0], v[1]}, upper_ = {v[0], v[1]};
     double area = 0.0;
-    for (std::size_t k = 0; k < v.size(); k += 2) {
+    const auto n = static_cast<std::size_t>(v.size());
+    for (std::size_t k = 0; k < n; k += 2) {
       vertices_.push_back({v[k], v[k + 1]});
-      const std::size_t next = (k + 2) % v.size();
+      const std::size_t next = (k + 2) % n;
       area += v[k] * v[next + 1] - v[next] * v[k + 1];
       for (int d = 0; d < 2; ++d)
         lower_[d] = std::min(lower_[d], v[k + d]), upper_[d] = std::max(upper_[d], v[k + d]);
