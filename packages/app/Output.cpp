@@ -173,8 +173,10 @@ std::vector<std::vector<double>> exodusElementValues(const ParticleTable& table)
 }  // namespace
 
 template <int Dim>
-ParticleTable gatherParticles(const ParticleSet<Dim>& ps, const Teuchos::RCP<const Comm>& comm,
-                              GlobalId totalParticles, TableRows rows) {
+std::vector<ParticleTable> gatherParticles(const ParticleSet<Dim>& ps,
+                                           const Teuchos::RCP<const Comm>& comm,
+                                           GlobalId totalParticles,
+                                           const std::vector<TableRows>& rows) {
   const auto columns = particleColumns<Dim>();
   const Mirrors<Dim> mirrors(ps);
   const std::size_t n = ps.size();
@@ -187,17 +189,28 @@ ParticleTable gatherParticles(const ParticleSet<Dim>& ps, const Teuchos::RCP<con
     for (std::size_t p = 0; p < n; ++p)
       data[p] = columns[c].read(mirrors, p);
   }
-  const Teuchos::RCP<const Map> target =
-      rows == TableRows::onRoot ? rootMap(totalParticles, comm)
-                                : Teuchos::rcp<const Map>(new Map(
-                                      static_cast<Tpetra::global_size_t>(totalParticles), 0, comm));
-  MultiVector gathered(target, columns.size());
-  gathered.doImport(local, Import(source, target), Tpetra::INSERT);
-  ParticleTable table;
-  for (const auto& c : columns)
-    table.names.push_back(c.csv);
-  table.columns = columnsOf(gathered, columns.size());
-  return table;
+  std::vector<ParticleTable> tables;
+  for (const TableRows where : rows) {
+    const Teuchos::RCP<const Map> target =
+        where == TableRows::onRoot
+            ? rootMap(totalParticles, comm)
+            : Teuchos::rcp<const Map>(
+                  new Map(static_cast<Tpetra::global_size_t>(totalParticles), 0, comm));
+    MultiVector gathered(target, columns.size());
+    gathered.doImport(local, Import(source, target), Tpetra::INSERT);
+    ParticleTable table;
+    for (const auto& c : columns)
+      table.names.push_back(c.csv);
+    table.columns = columnsOf(gathered, columns.size());
+    tables.push_back(std::move(table));
+  }
+  return tables;
+}
+
+template <int Dim>
+ParticleTable gatherParticles(const ParticleSet<Dim>& ps, const Teuchos::RCP<const Comm>& comm,
+                              GlobalId totalParticles, TableRows rows) {
+  return gatherParticles(ps, comm, totalParticles, std::vector<TableRows>{rows}).front();
 }
 
 template <int Dim>
@@ -217,7 +230,9 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
       gridFields_(gridFieldNames.size()),
       directory_(directory),
       prefix_(prefix) {
-  const auto table = gatherParticles(particles, ownership.comm(), totalParticles);
+  // The particles are needed here only for the Exodus meshes.
+  const auto table =
+      exodus_ ? gatherParticles(particles, ownership.comm(), totalParticles) : ParticleTable();
   if (!root_)
     return;
   std::error_code error;
@@ -346,14 +361,22 @@ template <int Dim>
 void Output<Dim>::writeFields(double time, const ParticleSet<Dim>& particles,
                               const MultiVector& gridFields, const std::vector<double>& globals) {
   const auto& comm = ownership_.comm();
-  if (csv_) {  // every rank formats and writes a block of rows
-    const auto block = gatherParticles(particles, comm, totalParticles_, TableRows::inBlocks);
+  // The CSV in blocks of ids on every rank, the Exodus fields on rank 0: one read of the
+  // particles for both.
+  std::vector<TableRows> wanted;
+  if (csv_)
+    wanted.push_back(TableRows::inBlocks);
+  if (exodus_)
+    wanted.push_back(TableRows::onRoot);
+  const auto tables = gatherParticles(particles, comm, totalParticles_, wanted);
+  if (csv_) {  // every rank formats and writes its block
+    const auto& block = tables.front();
     writeCsvTableCollectively(directory_ + "/" + prefix_ + "_particles.csv", *comm, block.names,
                               block.columns);
   }
   if (!exodus_)
     return;
-  const auto table = gatherParticles(particles, comm, totalParticles_);
+  const auto& table = tables.back();
   const auto nodes = rootMap(ownership_.grid().numNodes(), comm);
   MultiVector gridOnRoot(nodes, gridFields.getNumVectors());
   gridOnRoot.doImport(gridFields, Import(gridFields.getMap(), nodes), Tpetra::INSERT);

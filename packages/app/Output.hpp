@@ -42,6 +42,12 @@ template <int Dim>
 ParticleTable gatherParticles(const ParticleSet<Dim>& particles,
                               const Teuchos::RCP<const Comm>& comm, GlobalId totalParticles,
                               TableRows rows = TableRows::onRoot);
+// Collective: one table per entry of `rows`, from a single read of the particles.
+template <int Dim>
+std::vector<ParticleTable> gatherParticles(const ParticleSet<Dim>& particles,
+                                           const Teuchos::RCP<const Comm>& comm,
+                                           GlobalId totalParticles,
+                                           const std::vector<TableRows>& rows);
 
 template <int Dim>
 class Output {

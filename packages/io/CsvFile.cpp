@@ -44,20 +44,25 @@ MPI_Comm rawComm(const Teuchos::Comm<int>& comm) {
   return *mpi->getRawMpiComm();
 }
 
+// Appends one row: value(0), ..., value(n - 1).
+template <class Value>
+void appendRow(std::string& out, std::size_t n, const Value& value) {
+  for (std::size_t c = 0; c < n; ++c) {
+    if (c)
+      out += ',';
+    appendNumber(out, value(c));
+  }
+  out += '\n';
+}
+
 }  // namespace
 
 std::string formatCsvRows(const std::vector<std::vector<double>>& values) {
   const std::size_t rows = values.empty() ? 0 : values[0].size();
   std::string out;
   out.reserve(rows * values.size() * 20);
-  for (std::size_t r = 0; r < rows; ++r) {
-    for (std::size_t c = 0; c < values.size(); ++c) {
-      if (c)
-        out += ',';
-      appendNumber(out, values[c][r]);
-    }
-    out += '\n';
-  }
+  for (std::size_t r = 0; r < rows; ++r)
+    appendRow(out, values.size(), [&](std::size_t c) { return values[c][r]; });
   return out;
 }
 
@@ -69,10 +74,9 @@ CsvHistory::CsvHistory(const std::string& path, const std::vector<std::string>& 
 void CsvHistory::append(const std::vector<double>& row) const {
   if (row.size() != columns_.size())
     throw std::logic_error("history row has the wrong length");
-  std::vector<std::vector<double>> one;
-  for (double v : row)
-    one.push_back({v});
-  writeOrThrow(path_, "a", formatCsvRows(one));
+  std::string text;
+  appendRow(text, row.size(), [&](std::size_t c) { return row[c]; });
+  writeOrThrow(path_, "a", text);
 }
 
 void writeCsvTable(const std::string& path, const std::vector<std::string>& columns,
