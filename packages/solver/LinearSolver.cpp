@@ -1,36 +1,43 @@
 #include "solver/LinearSolver.hpp"
 
+#include <algorithm>
+
 #include <Stratimikos_DefaultLinearSolverBuilder.hpp>
 #include <Stratimikos_MueLuHelpers.hpp>
 #include <Teuchos_AbstractFactoryStd.hpp>
-#include <Thyra_Ifpack2PreconditionerFactory.hpp>
 #include <Thyra_LinearOpWithSolveFactoryHelpers.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Thyra_VectorStdOps.hpp>
 
 #include "core/Errors.hpp"
+#include "solver/Ifpack2Factory.hpp"
 
 namespace impm {
 
 namespace {
 
-void solveOneByOne(Thyra::LinearOpWithSolveFactoryBase<double>& lows,
-                   const Teuchos::RCP<const Comm>& comm) {
-  // One row on rank 0, none elsewhere, so that every rank takes part.
-  const std::size_t rows = comm->getRank() == 0 ? 1 : 0;
-  auto map = Teuchos::rcp(new Map(1, rows, 0, comm));
-  auto A = Teuchos::rcp(new CrsMatrix(map, 1));
-  if (rows)
-    A->insertGlobalValues(0, Teuchos::tuple<GO>(0), Teuchos::tuple<double>(2.0));
+// A 1-D Laplacian with two rows on every rank: each rank takes part with a non-empty
+// matrix (subdomain direct solvers fail on empty ones, which impm's grid systems never have).
+void solveProbe(Thyra::LinearOpWithSolveFactoryBase<double>& lows,
+                const Teuchos::RCP<const Comm>& comm) {
+  const GO n = 2 * comm->getSize();
+  auto map = Teuchos::rcp(new Map(n, 2, 0, comm));
+  auto A = Teuchos::rcp(new CrsMatrix(map, 3));
+  for (LO k = 0; k < 2; ++k) {
+    const GO i = map->getGlobalElement(k);
+    for (GO j = std::max<GO>(i - 1, 0); j <= std::min<GO>(i + 1, n - 1); ++j)
+      A->insertGlobalValues(i, Teuchos::tuple<GO>(j), Teuchos::tuple<double>(i == j ? 2.0 : -1.0));
+  }
   A->fillComplete();
   auto b = Teuchos::rcp(new Vector(map)), x = Teuchos::rcp(new Vector(map));
   b->putScalar(1.0);
+  // Whether it converges is not checked: the deck's iteration limit may be meant for the
+  // real systems.
   auto op = Thyra::createConstLinearOp<double, LO, GO, Node>(
       Teuchos::rcp_implicit_cast<const Tpetra::Operator<double, LO, GO, Node>>(A));
   auto solver = Thyra::linearOpWithSolve(lows, op);
-  auto tb = Thyra::createConstVector<double, LO, GO, Node>(b);
-  auto tx = Thyra::createVector<double, LO, GO, Node>(x);
-  solver->solve(Thyra::NOTRANS, *tb, tx.ptr());
+  solver->solve(Thyra::NOTRANS, *Thyra::createConstVector<double, LO, GO, Node>(b),
+                Thyra::createVector<double, LO, GO, Node>(x).ptr());
 }
 
 }  // namespace
@@ -70,7 +77,6 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolveStrat
     const std::string& path) {
   Stratimikos::DefaultLinearSolverBuilder builder;
   using Base = Thyra::PreconditionerFactoryBase<double>;
-  using Ifpack2Factory = Thyra::Ifpack2PreconditionerFactory<CrsMatrix>;
   builder.setPreconditioningStrategyFactory(Teuchos::abstractFactoryStd<Base, Ifpack2Factory>(),
                                             "Ifpack2");
   Stratimikos::enableMueLu<LO, GO, Node>(builder);
@@ -81,7 +87,7 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolveStrat
   try {
     builder.setParameterList(list);
     lows = builder.createLinearSolveStrategy("");
-    solveOneByOne(*lows, comm);
+    solveProbe(*lows, comm);
   } catch (const std::exception& e) {
     throw InputError(path, "Stratimikos rejected the list: " + trilinosMessage(e.what()));
   }

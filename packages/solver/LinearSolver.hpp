@@ -15,8 +15,8 @@ namespace impm {
 Teuchos::ParameterList defaultLinearSolverParameters();
 
 // The Stratimikos strategy for `params` merged over the default.  Validates the list by
-// solving a 1x1 system on `comm` (so that Belos, Ifpack2 and MueLu check their sublists
-// before any output exists); throws InputError(path, reason) when it is wrong.
+// solving a small system with rows on every rank of `comm` (so that Belos, Ifpack2 and MueLu check
+// their sublists before any output exists); throws InputError(path, reason) when it is wrong.
 Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolveStrategy(
     const Teuchos::ParameterList& params, const Teuchos::RCP<const Comm>& comm,
     const std::string& path);

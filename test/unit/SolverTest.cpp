@@ -109,6 +109,26 @@ TEST(LinearSolver, MisspeltListIsAnInputError) {
   }
 }
 
+// Teuchos reports an unknown parameter over three lines; the error keeps all of them.
+TEST(LinearSolver, UnknownIfpack2SettingNamesItsSublist) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  Teuchos::ParameterList bad;
+  bad.sublist("Preconditioner Types")
+      .sublist("Ifpack2")
+      .sublist("Ifpack2 Settings")
+      .set("fact: ilut level-of-fil", 2.0);
+  try {
+    createLinearSolveStrategy(bad, comm, "Solver/Linear Solver");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("fact: ilut level-of-fil"), std::string::npos) << what;
+    EXPECT_NE(what.find("Ifpack2->Ifpack2 Settings"), std::string::npos) << what;
+    EXPECT_NE(what.find("was not found in the list of valid parameters"), std::string::npos)
+        << what;
+  }
+}
+
 // 1-D Laplacian with Dirichlet ends, solved by every strategy impm documents.
 void expectSolves(const Teuchos::ParameterList& params) {
   auto comm = Teuchos::DefaultComm<int>::getComm();
@@ -143,6 +163,28 @@ void expectSolves(const Teuchos::ParameterList& params) {
 
 TEST(LinearSolver, DefaultGmresWithIlut) {
   expectSolves(Teuchos::ParameterList());
+}
+
+// Additive Schwarz with an exact LU of each rank's rows (Amesos2 KLU2 on a one-rank
+// matrix), the settings Trilinos 13.2's Stratimikos list lacks (solver/Ifpack2Factory.hpp).
+TEST(LinearSolver, SchwarzWithKlu2Subdomains) {
+  Teuchos::ParameterList p;
+  auto& ifpack2 = p.sublist("Preconditioner Types").sublist("Ifpack2");
+  ifpack2.set("Prec Type", std::string("SCHWARZ"));
+  auto& settings = ifpack2.sublist("Ifpack2 Settings");
+  settings.set("schwarz: inner preconditioner name", std::string("AMESOS2"));
+  auto& inner = settings.sublist("schwarz: inner preconditioner parameters");
+  inner.set("Amesos2 solver name", std::string("klu2"));
+  inner.sublist("Amesos2");
+  expectSolves(p);
+}
+
+TEST(LinearSolver, RilukByKokkosKernels) {
+  Teuchos::ParameterList p;
+  auto& ifpack2 = p.sublist("Preconditioner Types").sublist("Ifpack2");
+  ifpack2.set("Prec Type", std::string("RILUK"));
+  ifpack2.sublist("Ifpack2 Settings").set("fact: type", std::string("KSPILUK"));
+  expectSolves(p);
 }
 
 TEST(LinearSolver, CgWithMueLu) {
