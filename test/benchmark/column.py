@@ -13,7 +13,8 @@ fails on the stretched cells of fine columns: several hundred GMRES iterations),
 coarse solve, so one rank only.  Medians of --repeat runs; a run longer than --timeout
 seconds is stopped and recorded.
 
-usage: column.py --impm build/drivers/impm [--repeat 1] [--write doc/performance.md]
+usage: column.py --impm build/drivers/impm [--repeat 1] [--preconditioners ILUT ...]
+                 [--write doc/performance.md]
 """
 
 import argparse
@@ -50,12 +51,12 @@ def main():
              "| Belos per step | Belos per Newton | memory per particle [kB] (largest process) | RMS error |",
              "|---|---|---|---|---|---|---|---|---|---|"]
     for name, np, sets in CONFIGS:
+        if name not in args.preconditioners:
+            continue
         for n in args.particles:
             base = ["Grid/Cells={1,%d}" % (n // 4), "Discretization/Method=cpdi",
                     "Output/Every=1000"]
             runs = []
-            if name not in args.preconditioners:
-                continue
             for _ in range(args.repeat):
                 runs.append(run_impm(args.impm, DECK, base + sets, np=np, timeout=args.timeout))
                 if runs[-1] is None:
