@@ -4,8 +4,10 @@
 #include <cmath>
 #include <sstream>
 
+#include "app/shapes/ShapeFactory.hpp"
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
+#include "core/Tensor.hpp"
 
 namespace impm {
 
@@ -18,12 +20,17 @@ const char* const kComponents[2] = {"x", "y"};
 // The formula variables of a Dim-D deck: current position, reference position, time.
 template <int Dim>
 const std::vector<std::string>& variables() {
-  return Dim == 1 ? kVariables1D : kVariables2D;
+  static_assert(Dim == 1 || Dim == 2, "Bodies: the formula variables of this dimension");
+  if constexpr (Dim == 1)
+    return kVariables1D;
+  else
+    return kVariables2D;
 }
 
 // Values in the order of variables<Dim>().
 template <int Dim>
 std::vector<double> arguments(const double* x, const double* X, double t) {
+  static_assert(Dim == 1 || Dim == 2, "Bodies: the formula arguments of this dimension");
   if constexpr (Dim == 1)
     return {x[0], X[0], t};
   else
@@ -82,9 +89,10 @@ Formula readFormula(const Teuchos::ParameterList& p, const std::string& name,
 
 // Vector formula: "Name" in 1-D, "Name x" and "Name y" in 2-D; the other form must be unset.
 template <int Dim>
-std::array<Formula, 2> readVector(const Teuchos::ParameterList& p, const std::string& name,
-                                  const std::string& path) {
-  std::array<Formula, 2> f;
+std::array<Formula, Dim> readVector(const Teuchos::ParameterList& p, const std::string& name,
+                                    const std::string& path) {
+  static_assert(Dim == 1 || Dim == 2, "Bodies: the vector parameters of this dimension");
+  std::array<Formula, Dim> f;
   const std::string other = Dim == 1 ? name + " x" : name;
   if (formulaText(p, other) != "0")
     throw InputError(path + "/" + other,
@@ -96,85 +104,9 @@ std::array<Formula, 2> readVector(const Teuchos::ParameterList& p, const std::st
   return f;
 }
 
-struct Point {
-  double x[2], half[2], volume;
-};
-
-// 1-D material points: equal particles filling [a, b], about `perCell` per grid cell.
-std::vector<Point> materialPoints(const Body& b, const GridGeometry<1>& g) {
-  const double h = g.spacing[0];
-  const int n =
-      std::max(1, static_cast<int>(std::lround(b.particlesPerCell * (b.upper - b.lower) / h)));
-  const double length = (b.upper - b.lower) / n;
-  std::vector<Point> points;
-  for (int k = 0; k < n; ++k)
-    points.push_back({{b.lower + (k + 0.5) * length, 0.0}, {length / 2, 0.0}, length});
-  return points;
-}
-
-// 1-D Gauss points: two per cell, on the part of each cell inside [a, b] (the cut part of a
-// cell that the body's end crosses, so that FEM integrates over the body exactly).
-std::vector<Point> gaussPoints(const Body& b, const GridGeometry<1>& g) {
-  std::vector<Point> points;
-  for (int c = 0; c < g.cells[0]; ++c) {
-    const double lo = std::max(b.lower, g.nodeCoord(0, c));
-    const double hi = std::min(b.upper, g.nodeCoord(0, c + 1));
-    if (hi - lo <= 1e-12 * g.spacing[0])
-      continue;
-    const double mid = 0.5 * (lo + hi), off = (hi - lo) / (2 * std::sqrt(3.0));
-    points.push_back({{mid - off, 0.0}, {(hi - lo) / 4, 0.0}, (hi - lo) / 2});
-    points.push_back({{mid + off, 0.0}, {(hi - lo) / 4, 0.0}, (hi - lo) / 2});
-  }
-  return points;
-}
-
-// 2-D: n x n points per cell of the grid near the shape.  Material points sit at the centres
-// of the n x n sub-cells that lie in the shape (a staircase of the boundary, exact for a
-// rectangle on grid lines); Gauss points (n = 2, at +-1/sqrt(3) of the half-cell) fill the
-// cells whose centre lies in the shape.
-std::vector<Point> cellPoints(const Body& b, const GridGeometry<2>& g, bool gauss) {
-  const int n = gauss ? 2 : b.particlesPerCell;
-  int lo[2], hi[2];
-  for (int d = 0; d < 2; ++d) {
-    lo[d] = std::max(0, static_cast<int>(std::floor(g.gridCoord(d, b.shape.lower()[d]))));
-    hi[d] = std::min(g.cells[d], static_cast<int>(std::ceil(g.gridCoord(d, b.shape.upper()[d]))));
-  }
-  const double hx = g.spacing[0], hy = g.spacing[1];
-  std::vector<Point> points;
-  for (int j = lo[1]; j < hi[1]; ++j)
-    for (int i = lo[0]; i < hi[0]; ++i) {
-      const double centre[2] = {g.nodeCoord(0, i) + hx / 2, g.nodeCoord(1, j) + hy / 2};
-      if (gauss && !b.shape.contains(centre))
-        continue;
-      for (int s = 0; s < n; ++s)
-        for (int r = 0; r < n; ++r) {
-          Point pt{};
-          const double off = 0.5 / std::sqrt(3.0);
-          pt.x[0] =
-              gauss ? centre[0] + (r ? off : -off) * hx : g.nodeCoord(0, i) + (r + 0.5) * hx / n;
-          pt.x[1] =
-              gauss ? centre[1] + (s ? off : -off) * hy : g.nodeCoord(1, j) + (s + 0.5) * hy / n;
-          if (!gauss && !b.shape.contains(pt.x))
-            continue;
-          pt.half[0] = hx / (2 * n), pt.half[1] = hy / (2 * n);
-          pt.volume = hx * hy / (n * n);
-          points.push_back(pt);
-        }
-    }
-  return points;
-}
-
-template <int Dim>
-std::vector<Point> integrationPoints(const Body& b, const GridGeometry<Dim>& g, Method method) {
-  if constexpr (Dim == 1)
-    return isParticleMethod(method) ? materialPoints(b, g) : gaussPoints(b, g);
-  else
-    return cellPoints(b, g, !isParticleMethod(method));
-}
-
 // x_p = X_p + u0(X_p), F_p = I + grad u0 by centred differences of the formulas.
 template <int Dim>
-void initialDisplacement(const Body& b, const double* X, double* u, double F[Dim][Dim]) {
+void initialDisplacement(const Body<Dim>& b, const double* X, double* u, double F[Dim][Dim]) {
   for (int a = 0; a < Dim; ++a) {
     u[a] = b.displacement[a](arguments<Dim>(X, X, 0.0));
     for (int c = 0; c < Dim; ++c) {
@@ -200,7 +132,7 @@ Bodies<Dim>::Bodies(const Teuchos::ParameterList& deck,
     const std::string& name = list.name(it);
     const auto& p = list.sublist(name);
     const std::string path = "Bodies/" + name;
-    Body b;
+    Body<Dim> b;
     b.name = name;
     const auto& material = p.get<std::string>("Material");
     b.material = -1;
@@ -209,22 +141,17 @@ Bodies<Dim>::Bodies(const Teuchos::ParameterList& deck,
         b.material = static_cast<int>(m);
     if (b.material < 0)
       throw InputError(path + "/Material", "no material called '" + material + "' in Materials");
-    b.shape = Shape(p, path, Dim);
-    b.lower = b.shape.lower()[0], b.upper = b.shape.upper()[0];
+    b.shape = createShape<Dim>(p, path);
     for (int d = 0; d < Dim; ++d) {
       const double tol = 1e-12 * grid.spacing[d];
-      if (b.shape.lower()[d] < grid.origin[d] - tol || b.shape.upper()[d] > grid.upper(d) + tol) {
+      const double lo = b.shape->lower()[d], hi = b.shape->upper()[d];
+      if (lo < grid.origin[d] - tol || hi > grid.upper(d) + tol) {
         std::ostringstream msg;
-        msg << "the body [" << b.shape.lower()[d] << ", " << b.shape.upper()[d]
-            << "] reaches outside the grid [" << grid.origin[d] << ", " << grid.upper(d) << "]";
+        msg << "the body [" << lo << ", " << hi << "] reaches outside the grid [" << grid.origin[d]
+            << ", " << grid.upper(d) << "]";
         if (Dim > 1)
           msg << " along " << kComponents[d];
-        const Shape::Kind k = b.shape.kind();
-        throw InputError(path + (k == Shape::Kind::interval    ? "/Extent"
-                                 : k == Shape::Kind::rectangle ? "/Lower Corner"
-                                 : k == Shape::Kind::disk      ? "/Center"
-                                                               : "/Vertices"),
-                         msg.str());
+        throw InputError(path + "/" + b.shape->placement(), msg.str());
       }
     }
     b.particlesPerCell = p.get<int>("Particles Per Cell");
@@ -258,94 +185,76 @@ int Bodies<Dim>::find(const std::string& name) const {
 }
 
 template <int Dim>
-ParticleSet<Dim> Bodies<Dim>::createParticles(
-    Method method, const Decomposition<Dim>& decomposition, int rank,
-    const std::vector<std::shared_ptr<Material<Dim>>>& materials, bool displaced) const {
+ParticleSet<Dim> Bodies<Dim>::createParticles(Method method,
+                                              const Decomposition<Dim>& decomposition, int rank,
+                                              const Materials<Dim>& materials,
+                                              bool displaced) const {
   struct Local {
-    Point point;
+    Seed<Dim> seed;
     GlobalId id;
     int body;
   };
   std::vector<Local> mine;
   GlobalId nextId = 0;
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
-    const auto points = integrationPoints<Dim>(bodies_[b], grid_, method);
-    if (points.empty())
+    const auto seeds =
+        bodies_[b].shape->fill(grid_, bodies_[b].particlesPerCell, !isParticleMethod(method));
+    if (seeds.empty())
       throw InputError("Bodies/" + bodies_[b].name,
                        "the body holds no integration point (smaller than a sub-cell?)");
-    for (const auto& pt : points) {
-      if (decomposition.ownerOfPoint(pt.x) == rank)
-        mine.push_back({pt, nextId, static_cast<int>(b)});
+    for (const auto& seed : seeds) {
+      if (decomposition.ownerOfPoint(seed.x) == rank)
+        mine.push_back({seed, nextId, static_cast<int>(b)});
       ++nextId;
     }
   }
-  ParticleSet<Dim> ps(mine.size());
-  auto id = Kokkos::create_mirror_view(ps.id);
-  auto body = Kokkos::create_mirror_view(ps.body);
-  auto material = Kokkos::create_mirror_view(ps.material);
-  auto X = Kokkos::create_mirror_view(ps.X);
-  auto volume = Kokkos::create_mirror_view(ps.volume);
-  auto section = Kokkos::create_mirror_view(ps.section);
-  auto mass = Kokkos::create_mirror_view(ps.mass);
-  auto F = Kokkos::create_mirror_view(ps.F);
-  auto domain = Kokkos::create_mirror_view(ps.domain);
-  auto domain0 = Kokkos::create_mirror_view(ps.domain0);
-  auto x = Kokkos::create_mirror_view(ps.x);
-  auto u = Kokkos::create_mirror_view(ps.u);
-  auto v = Kokkos::create_mirror_view(ps.v);
-  auto volume0 = Kokkos::create_mirror_view(ps.volume0);
+  ParticleSet<Dim, Kokkos::DefaultHostExecutionSpace> ps(mine.size());
   for (std::size_t p = 0; p < mine.size(); ++p) {
-    const Body& b = bodies_[mine[p].body];
-    const Point& pt = mine[p].point;
-    id(p) = mine[p].id;
-    body(p) = mine[p].body;
-    material(p) = b.material;
-    double Xp[Dim], up[Dim] = {}, Fp[Dim][Dim] = {};
-    for (int d = 0; d < Dim; ++d) {
-      Xp[d] = X(p, d) = pt.x[d];
-      Fp[d][d] = 1.0;
-      domain0(p, d, d) = pt.half[d];
-    }
-    section(p) = b.section(pt.x[0]);
-    if (!(section(p) > 0))
+    const Body<Dim>& b = bodies_[mine[p].body];
+    const Seed<Dim>& seed = mine[p].seed;
+    ps.id(p) = mine[p].id;
+    ps.body(p) = mine[p].body;
+    ps.material(p) = b.material;
+    double X[Dim], u[Dim] = {}, F[Dim][Dim] = {};
+    for (int d = 0; d < Dim; ++d)
+      X[d] = ps.X(p, d) = seed.x[d], F[d][d] = 1.0;
+    ps.section(p) = b.section(seed.x[0]);
+    if (!(ps.section(p) > 0))
       throw InputError("Bodies/" + b.name + "/Section", "must be > 0, but is " +
-                                                            std::to_string(section(p)) +
-                                                            " at x = " + std::to_string(pt.x[0]));
-    volume0(p) = pt.volume;
-    mass(p) = materials[b.material]->density() * section(p) * volume0(p);
+                                                            std::to_string(ps.section(p)) +
+                                                            " at x = " + std::to_string(seed.x[0]));
+    ps.volume0(p) = seed.volume;
+    ps.mass(p) = materials[b.material]->density() * ps.section(p) * seed.volume;
     if (displaced)
-      initialDisplacement<Dim>(b, Xp, up, Fp);
-    double J = Fp[0][0];
-    if constexpr (Dim == 2)
-      J = Fp[0][0] * Fp[1][1] - Fp[0][1] * Fp[1][0];
+      initialDisplacement<Dim>(b, X, u, F);
+    const double J = determinant<Dim>(F);
     if (!(J > 0)) {
       std::ostringstream msg;
-      msg << "gives det F <= 0 at X = (" << Xp[0];
+      msg << "gives det F <= 0 at X = (" << X[0];
       for (int d = 1; d < Dim; ++d)
-        msg << ", " << Xp[d];
+        msg << ", " << X[d];
       throw InputError("Bodies/" + b.name + "/Initial Displacement", msg.str() + ")");
     }
-    volume(p) = J * volume0(p);
-    double xp[Dim];
+    ps.volume(p) = J * seed.volume;
+    double x[Dim];
     for (int a = 0; a < Dim; ++a) {
-      u(p, a) = up[a];
-      xp[a] = x(p, a) = Xp[a] + up[a];
-      for (int c = 0; c < Dim; ++c) {
-        F(p, a, c) = Fp[a][c];
-        domain(p, a, c) = Fp[a][c] * pt.half[c];  // r_k = F r0_k, r0_k along axis k
+      ps.u(p, a) = u[a];
+      x[a] = ps.x(p, a) = X[a] + u[a];
+      for (int k = 0; k < Dim; ++k) {
+        ps.F(p, a, k) = F[a][k];
+        ps.domain0(p, a, k) = seed.half[a][k];
+        double r = 0.0;  // r_k = F r0_k
+        for (int c = 0; c < Dim; ++c)
+          r += F[a][c] * seed.half[c][k];
+        ps.domain(p, a, k) = r;
       }
     }
     for (int a = 0; a < Dim; ++a)
-      v(p, a) = b.velocity[a](arguments<Dim>(xp, Xp, 0.0));
+      ps.v(p, a) = b.velocity[a](arguments<Dim>(x, X, 0.0));
   }
-  Kokkos::deep_copy(ps.id, id), Kokkos::deep_copy(ps.body, body);
-  Kokkos::deep_copy(ps.material, material), Kokkos::deep_copy(ps.X, X);
-  Kokkos::deep_copy(ps.x, x), Kokkos::deep_copy(ps.volume, volume);
-  Kokkos::deep_copy(ps.volume0, volume0), Kokkos::deep_copy(ps.section, section);
-  Kokkos::deep_copy(ps.mass, mass), Kokkos::deep_copy(ps.F, F);
-  Kokkos::deep_copy(ps.domain, domain), Kokkos::deep_copy(ps.domain0, domain0);
-  Kokkos::deep_copy(ps.u, u), Kokkos::deep_copy(ps.v, v);
-  return ps;
+  ParticleSet<Dim> particles;
+  particles.copyFrom(ps);
+  return particles;
 }
 
 template <int Dim>
@@ -353,7 +262,7 @@ void Bodies<Dim>::initialNodalState(const double* x, double* u, double* v) const
   std::size_t best = 0;
   double distance = 1e300;
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
-    const double d = bodies_[b].shape.contains(x) ? -1.0 : bodies_[b].shape.boxDistance(x);
+    const double d = bodies_[b].shape->contains(x) ? -1.0 : bodies_[b].shape->boxDistance(x);
     if (d < distance)
       distance = d, best = b;
   }
@@ -383,24 +292,19 @@ std::vector<std::string> Bodies<Dim>::columnNames() const {
 
 template <int Dim>
 void Bodies<Dim>::applyLoads(ParticleSet<Dim>& particles, double time) const {
-  auto body = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.body);
-  auto X = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.X);
-  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.x);
-  auto volume = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.volume);
-  auto mass = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.mass);
-  auto force = Kokkos::create_mirror_view(particles.force);
+  const auto host = particles.mirror(Kokkos::DefaultHostExecutionSpace());
   for (std::size_t p = 0; p < particles.size(); ++p) {
-    const Body& b = bodies_[body(p)];
-    double xp[Dim], Xp[Dim];
+    const Body<Dim>& b = bodies_[host.body(p)];
+    double x[Dim], X[Dim];
     for (int d = 0; d < Dim; ++d)
-      xp[d] = x(p, d), Xp[d] = X(p, d);
-    const auto args = arguments<Dim>(xp, Xp, time);
+      x[d] = host.x(p, d), X[d] = host.X(p, d);
+    const auto args = arguments<Dim>(x, X, time);
     for (int a = 0; a < Dim; ++a)
-      force(p, a) = mass(p) * b.bodyForce[a](args);
-    if (Dim == 1)
-      force(p, 0) += b.load(args) * volume(p);
+      host.force(p, a) = host.mass(p) * b.bodyForce[a](args);
+    if constexpr (Dim == 1)
+      host.force(p, 0) += b.load(args) * host.volume(p);
   }
-  Kokkos::deep_copy(particles.force, force);
+  Kokkos::deep_copy(particles.force, host.force);
 }
 
 template class Bodies<1>;

@@ -11,30 +11,29 @@
 #include <string>
 #include <vector>
 
+#include "app/shapes/Shape.hpp"
 #include "basis/Method.hpp"
 #include "core/Decomposition.hpp"
 #include "core/Formula.hpp"
-#include "core/Shape.hpp"
-#include "material/Material.hpp"
+#include "material/MaterialState.hpp"
 
 namespace impm {
 
 Teuchos::ParameterList bodyValidParameters();
 
-// Vector quantities have one formula per component (2-D: x and y).  Formula variables:
-// 1-D x, X, t; 2-D x, y, X, Y, t (current and reference position, time).
+// Vector quantities have one formula per component.  Formula variables: 1-D x, X, t; 2-D
+// x, y, X, Y, t (current and reference position, time).
+template <int Dim>
 struct Body {
   std::string name;
   int material = 0;  // index into the deck's Materials
-  Shape shape;
-  double lower = 0.0;  // 1-D: the interval [lower, upper]
-  double upper = 0.0;
+  std::shared_ptr<const Shape<Dim>> shape;
   int particlesPerCell = 2;
-  Formula section;                      // 1-D: A(x); 2-D: 1 (plane strain, unit thickness)
-  Formula load;                         // 1-D distributed load f(x, X, t), per unit length
-  std::array<Formula, 2> bodyForce;     // body force b(x, X, t), per unit mass
-  std::array<Formula, 2> velocity;      // initial velocity v(x, X)
-  std::array<Formula, 2> displacement;  // initial displacement u0(X)
+  Formula section;                        // 1-D: A(x); 2-D: 1 (plane strain, unit thickness)
+  Formula load;                           // 1-D distributed load f(x, X, t), per unit length
+  std::array<Formula, Dim> bodyForce;     // body force b(x, X, t), per unit mass
+  std::array<Formula, Dim> velocity;      // initial velocity v(x, X)
+  std::array<Formula, Dim> displacement;  // initial displacement u0(X)
 };
 
 template <int Dim>
@@ -44,16 +43,16 @@ class Bodies {
   Bodies(const Teuchos::ParameterList& deck, const std::vector<std::string>& materialNames,
          const GridGeometry<Dim>& grid);
 
-  const std::vector<Body>& list() const { return bodies_; }
+  const std::vector<Body<Dim>>& list() const { return bodies_; }
   // Index of the body called `name`, or -1.
   int find(const std::string& name) const;
 
-  // The integration points of every body that lie on `rank`, with the initial velocity.
-  // `displaced`: they also take the initial displacement (x = X + u0, F = 1 + u0');
-  // otherwise the stepper applies it through the grid (total Lagrangian).
+  // The integration points of every body that lie on `rank`, with the initial velocity, in
+  // the order of their ids.  `displaced`: they also take the initial displacement
+  // (x = X + u0, F = 1 + grad u0); otherwise the stepper applies it through the grid (total
+  // Lagrangian).
   ParticleSet<Dim> createParticles(Method method, const Decomposition<Dim>& decomposition, int rank,
-                                   const std::vector<std::shared_ptr<Material<Dim>>>& materials,
-                                   bool displaced) const;
+                                   const Materials<Dim>& materials, bool displaced) const;
 
   // The initial displacement and velocity at node position x: those of the body that holds
   // x, or else of the nearest body (FEM's nodal initial conditions).
@@ -68,7 +67,7 @@ class Bodies {
 
  private:
   GridGeometry<Dim> grid_;
-  std::vector<Body> bodies_;
+  std::vector<Body<Dim>> bodies_;
 };
 
 }  // namespace impm

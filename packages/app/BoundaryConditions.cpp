@@ -40,8 +40,8 @@ std::shared_ptr<Contribution<1>> robinEnd(const std::string& name, const Teuchos
       throw InputError(path + "/End", "that end of body '" + p.get<std::string>("Body") +
                                           "' already has a boundary condition");
   taken.push_back(end);
-  const Body& body = bodies.list()[b];
-  const double at = p.get<std::string>("End") == "left" ? body.lower : body.upper;
+  const auto& shape = *bodies.list()[b].shape;
+  const double at = p.get<std::string>("End") == "left" ? shape.lower()[0] : shape.upper()[0];
   return std::make_shared<RobinEnd>(name, p, at, kinematics);
 }
 
@@ -72,8 +72,9 @@ std::vector<std::shared_ptr<Contribution<Dim>>> createBoundaryConditions(
           throw InputError(path + "/Type",
                            "a traction acts on the faces of particle domains, which fem's Gauss "
                            "points do not have: use mpm, gimp or cpdi");
-        result.push_back(
-            std::make_shared<EdgeTraction>(name, p, b, bodies.list()[b].shape, kinematics));
+        const auto shape = bodies.list()[b].shape;
+        result.push_back(std::make_shared<EdgeTraction>(
+            name, p, b, [shape](const double* x) { return shape->contains(x); }, kinematics));
         continue;
       }
       throw InputError(path + "/Type",

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "core/NodeOwnership.hpp"
-#include "solver/StepperContext.hpp"
+#include "solver/StepperSetup.hpp"
 
 namespace impm {
 

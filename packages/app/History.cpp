@@ -8,6 +8,7 @@ namespace impm {
 
 template <int Dim>
 History<Dim>::History(const std::vector<std::string>& bodyNames) : bodies_(bodyNames.size()) {
+  static_assert(Dim == 1 || Dim == 2, "History: the columns of this dimension");
   columns_ = {"step",
               "time",
               "dt",
@@ -40,18 +41,15 @@ std::vector<double> History<Dim>::row(const StepRecord& r, double F0, double FL,
   const double inf = std::numeric_limits<double>::infinity();
   const std::size_t n = bodies_ * Dim;
   std::vector<double> mass(bodies_, 0.0), sums(n, 0.0), lows(n, inf), highs(n, -inf);
-  auto body = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.body);
-  auto m = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.mass);
-  auto v = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.v);
-  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.x);
+  const auto host = particles.mirror(Kokkos::DefaultHostExecutionSpace());
   for (std::size_t p = 0; p < particles.size(); ++p) {
-    const int b = body(p);
-    mass[b] += m(p);
+    const int b = host.body(p);
+    mass[b] += host.mass(p);
     for (int d = 0; d < Dim; ++d) {
       const std::size_t k = b * Dim + d;
-      sums[k] += m(p) * v(p, d);
-      lows[k] = std::min(lows[k], x(p, d));
-      highs[k] = std::max(highs[k], x(p, d));
+      sums[k] += host.mass(p) * host.v(p, d);
+      lows[k] = std::min(lows[k], host.x(p, d));
+      highs[k] = std::max(highs[k], host.x(p, d));
     }
   }
   std::vector<double> gmass(bodies_), gsums(n), glows(n), ghighs(n);

@@ -9,7 +9,7 @@
 
 #include "core/ParticleSet.hpp"
 #include "core/TpetraTypes.hpp"
-#include "solver/StepperContext.hpp"
+#include "solver/StepperSetup.hpp"
 
 namespace impm {
 

@@ -1,5 +1,6 @@
 #include "app/Output.hpp"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "core/Errors.hpp"
@@ -16,11 +17,21 @@ Teuchos::ParameterList outputValidParameters() {
              Bounds::atLeast(1));
   declareBool(valid, "Exodus", true, "Write Exodus files of the grid and the particles");
   declareBool(valid, "CSV", true, "Write the particle table as CSV");
+  declareStringArray(valid, "Fields", {},
+                     "Particle fields written to the particle CSV and Exodus files (empty: all); "
+                     "the framework's (id, X, x, u, strain, stress, stress_zz, J, volume, v, a, "
+                     "F, mass, section, body, domain, domain0, as the dimension has them) and "
+                     "those the materials declare");
   declareBool(valid, "Timers", false,
               "Print the wall-clock time of each phase (set-up, particle-grid map, graph, "
               "residual, Jacobian, Newton solve, particle update, migration, output) at the end, "
               "over all ranks");
   return valid;
+}
+
+std::vector<std::string> outputFields(const Teuchos::ParameterList& output) {
+  const auto& names = output.get<Teuchos::Array<std::string>>("Fields");
+  return std::vector<std::string>(names.begin(), names.end());
 }
 
 const std::vector<double>& ParticleTable::column(const std::string& name) const {
@@ -30,111 +41,34 @@ const std::vector<double>& ParticleTable::column(const std::string& name) const 
   throw std::logic_error("no particle column " + name);
 }
 
+template <int Dim>
+std::vector<TableColumn> outputColumns(const ParticleSet<Dim>& particles,
+                                       const std::vector<std::string>& fields) {
+  std::vector<std::string> available;
+  particles.forEachField([&](const FieldSpec& spec, const auto&) {
+    if (spec.output())
+      available.push_back(spec.name);
+  });
+  for (const auto& f : fields)
+    if (std::find(available.begin(), available.end(), f) == available.end()) {
+      std::string list;
+      for (const auto& a : available)
+        list += (list.empty() ? "" : ", ") + a;
+      throw InputError("Output/Fields", "'" + f + "' is not an output field" +
+                                            didYouMean(f, available) + "; the fields are " + list);
+    }
+  std::vector<TableColumn> out;
+  particles.forEachField([&](const FieldSpec& spec, const auto&) {
+    const bool wanted = fields.empty() || spec.name == "id" ||
+                        std::find(fields.begin(), fields.end(), spec.name) != fields.end();
+    if (wanted)
+      for (const auto& c : spec.columns)
+        out.push_back({spec.name, c.component, c.csv, c.exodus});
+  });
+  return out;
+}
+
 namespace {
-
-// One column of the particle table: its CSV name, its Exodus element-variable name (empty:
-// not an element variable) and how to read it from the host mirrors.
-template <int Dim>
-struct Mirrors {
-  explicit Mirrors(const ParticleSet<Dim>& ps)
-      : id(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.id)),
-        body(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.body)),
-        X(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.X)),
-        x(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.x)),
-        u(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.u)),
-        v(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.v)),
-        a(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.a)),
-        F(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.F)),
-        stress(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.stress)),
-        domain(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.domain)),
-        domain0(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.domain0)),
-        stressZZ(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.stressZZ)),
-        volume(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.volume)),
-        mass(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.mass)),
-        section(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.section)) {}
-  typename Kokkos::View<GlobalId*>::HostMirror id;
-  typename Kokkos::View<int*>::HostMirror body;
-  typename ParticleSet<Dim>::Vectors::HostMirror X, x, u, v, a;
-  typename ParticleSet<Dim>::Tensors::HostMirror F, stress, domain, domain0;
-  typename ParticleSet<Dim>::Scalars::HostMirror stressZZ, volume, mass, section;
-};
-
-template <int Dim>
-struct Column {
-  std::string csv, exodus;
-  std::function<double(const Mirrors<Dim>&, std::size_t)> read;
-};
-
-// 1-D: id,X,x,u,strain,stress,volume,v,a,mass,section,body.  X is the Exodus coordinate and
-// u its nodal displacementX, so neither is an element variable.
-template <int Dim>
-std::vector<Column<Dim>> particleColumns();
-
-template <>
-std::vector<Column<1>> particleColumns<1>() {
-  using M = Mirrors<1>;
-  return {
-      {"id", "", [](const M& m, std::size_t p) { return double(m.id(p)); }},
-      {"X", "", [](const M& m, std::size_t p) { return m.X(p, 0); }},
-      {"x", "", [](const M& m, std::size_t p) { return m.x(p, 0); }},
-      {"u", "", [](const M& m, std::size_t p) { return m.u(p, 0); }},
-      {"strain", "strain", [](const M& m, std::size_t p) { return m.F(p, 0, 0) - 1.0; }},
-      {"stress", "stress", [](const M& m, std::size_t p) { return m.stress(p, 0, 0); }},
-      {"volume", "volume", [](const M& m, std::size_t p) { return m.volume(p); }},
-      {"v", "velocityX", [](const M& m, std::size_t p) { return m.v(p, 0); }},
-      {"a", "accelerationX", [](const M& m, std::size_t p) { return m.a(p, 0); }},
-      {"mass", "mass", [](const M& m, std::size_t p) { return m.mass(p); }},
-      {"section", "section", [](const M& m, std::size_t p) { return m.section(p); }},
-      {"body", "body", [](const M& m, std::size_t p) { return double(m.body(p)); }},
-  };
-}
-
-// 2-D: id,X,Y,x,y,u_x,u_y,stress_xx,stress_yy,stress_xy,stress_zz,J,volume, then velocity,
-// acceleration, F, mass, body and the domain half-vectors r1, r2 (columns of F r0) and their
-// reference values r01, r02.
-template <>
-std::vector<Column<2>> particleColumns<2>() {
-  using M = Mirrors<2>;
-  std::vector<Column<2>> c = {
-      {"id", "", [](const M& m, std::size_t p) { return double(m.id(p)); }},
-      {"X", "", [](const M& m, std::size_t p) { return m.X(p, 0); }},
-      {"Y", "", [](const M& m, std::size_t p) { return m.X(p, 1); }},
-      {"x", "", [](const M& m, std::size_t p) { return m.x(p, 0); }},
-      {"y", "", [](const M& m, std::size_t p) { return m.x(p, 1); }},
-      {"u_x", "", [](const M& m, std::size_t p) { return m.u(p, 0); }},
-      {"u_y", "", [](const M& m, std::size_t p) { return m.u(p, 1); }},
-      {"stress_xx", "stress_xx", [](const M& m, std::size_t p) { return m.stress(p, 0, 0); }},
-      {"stress_yy", "stress_yy", [](const M& m, std::size_t p) { return m.stress(p, 1, 1); }},
-      {"stress_xy", "stress_xy", [](const M& m, std::size_t p) { return m.stress(p, 0, 1); }},
-      {"stress_zz", "stress_zz", [](const M& m, std::size_t p) { return m.stressZZ(p); }},
-      {"J", "J",
-       [](const M& m, std::size_t p) {
-         return m.F(p, 0, 0) * m.F(p, 1, 1) - m.F(p, 0, 1) * m.F(p, 1, 0);
-       }},
-      {"volume", "volume", [](const M& m, std::size_t p) { return m.volume(p); }},
-      {"v_x", "velocityX", [](const M& m, std::size_t p) { return m.v(p, 0); }},
-      {"v_y", "velocityY", [](const M& m, std::size_t p) { return m.v(p, 1); }},
-      {"a_x", "accelerationX", [](const M& m, std::size_t p) { return m.a(p, 0); }},
-      {"a_y", "accelerationY", [](const M& m, std::size_t p) { return m.a(p, 1); }},
-  };
-  const char* const xy = "xy";
-  for (int a = 0; a < 2; ++a)
-    for (int b = 0; b < 2; ++b) {
-      const std::string name = std::string("F_") + xy[a] + xy[b];
-      c.push_back({name, name, [a, b](const M& m, std::size_t p) { return m.F(p, a, b); }});
-    }
-  c.push_back({"mass", "mass", [](const M& m, std::size_t p) { return m.mass(p); }});
-  c.push_back({"body", "body", [](const M& m, std::size_t p) { return double(m.body(p)); }});
-  for (const char* r : {"r1_", "r2_", "r01_", "r02_"})
-    for (int a = 0; a < 2; ++a) {
-      const int k = r[1] == '0' ? r[2] - '1' : r[1] - '1';
-      const bool reference = r[1] == '0';
-      c.push_back({std::string(r) + xy[a], "", [a, k, reference](const M& m, std::size_t p) {
-                     return reference ? m.domain0(p, a, k) : m.domain(p, a, k);
-                   }});
-    }
-  return c;
-}
 
 // A map with every index 0..n-1 on rank 0 and nothing elsewhere.
 Teuchos::RCP<const Map> rootMap(GlobalId n, const Teuchos::RCP<const Comm>& comm) {
@@ -151,23 +85,17 @@ std::vector<std::vector<double>> columnsOf(const MultiVector& mv, std::size_t co
   return out;
 }
 
-template <int Dim>
-std::vector<std::string> exodusElementVariables() {
-  std::vector<std::string> names;
-  for (const auto& c : particleColumns<Dim>())
-    if (!c.exodus.empty())
-      names.push_back(c.exodus);
-  return names;
-}
-
-template <int Dim>
-std::vector<std::vector<double>> exodusElementValues(const ParticleTable& table) {
-  std::vector<std::vector<double>> values;
-  const auto columns = particleColumns<Dim>();
-  for (std::size_t c = 0; c < columns.size(); ++c)
-    if (!columns[c].exodus.empty())
-      values.push_back(table.columns[c]);
-  return values;
+// The columns of `wanted` that `all` holds, by CSV name, in the order of `all`.
+std::vector<TableColumn> unionOf(const std::vector<TableColumn>& all,
+                                 const std::vector<std::vector<TableColumn>>& wanted) {
+  std::vector<TableColumn> out;
+  for (const auto& c : all)
+    for (const auto& w : wanted)
+      if (std::any_of(w.begin(), w.end(), [&](const TableColumn& x) { return x.csv == c.csv; })) {
+        out.push_back(c);
+        break;
+      }
+  return out;
 }
 
 }  // namespace
@@ -176,19 +104,23 @@ template <int Dim>
 std::vector<ParticleTable> gatherParticles(const ParticleSet<Dim>& ps,
                                            const Teuchos::RCP<const Comm>& comm,
                                            GlobalId totalParticles,
+                                           const std::vector<TableColumn>& columns,
                                            const std::vector<TableRows>& rows) {
-  const auto columns = particleColumns<Dim>();
-  const Mirrors<Dim> mirrors(ps);
+  const auto host = ps.mirror(Kokkos::DefaultHostExecutionSpace());
   const std::size_t n = ps.size();
-  std::vector<GO> gids(mirrors.id.data(), mirrors.id.data() + n);
+  std::vector<GO> gids(host.id.data(), host.id.data() + n);
   auto source = Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(totalParticles),
                                      Teuchos::ArrayView<const GO>(gids), 0, comm));
-  MultiVector local(source, columns.size());
-  for (std::size_t c = 0; c < columns.size(); ++c) {
-    auto data = local.getDataNonConst(c);
-    for (std::size_t p = 0; p < n; ++p)
-      data[p] = columns[c].read(mirrors, p);
-  }
+  MultiVector local(source, std::max<std::size_t>(columns.size(), 1));
+  host.forEachField([&](const FieldSpec& spec, const auto& view) {
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      if (columns[c].field != spec.name)
+        continue;
+      auto data = local.getDataNonConst(c);
+      for (std::size_t p = 0; p < n; ++p)
+        data[p] = fieldComponent(view, p, columns[c].component);
+    }
+  });
   std::vector<ParticleTable> tables;
   for (const TableRows where : rows) {
     const Teuchos::RCP<const Map> target =
@@ -196,7 +128,7 @@ std::vector<ParticleTable> gatherParticles(const ParticleSet<Dim>& ps,
             ? rootMap(totalParticles, comm)
             : Teuchos::rcp<const Map>(
                   new Map(static_cast<Tpetra::global_size_t>(totalParticles), 0, comm));
-    MultiVector gathered(target, columns.size());
+    MultiVector gathered(target, local.getNumVectors());
     gathered.doImport(local, Import(source, target), Tpetra::INSERT);
     ParticleTable table;
     for (const auto& c : columns)
@@ -210,7 +142,8 @@ std::vector<ParticleTable> gatherParticles(const ParticleSet<Dim>& ps,
 template <int Dim>
 ParticleTable gatherParticles(const ParticleSet<Dim>& ps, const Teuchos::RCP<const Comm>& comm,
                               GlobalId totalParticles, TableRows rows) {
-  return gatherParticles(ps, comm, totalParticles, std::vector<TableRows>{rows}).front();
+  return gatherParticles(ps, comm, totalParticles, outputColumns(ps), std::vector<TableRows>{rows})
+      .front();
 }
 
 template <int Dim>
@@ -230,9 +163,24 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
       gridFields_(gridFieldNames.size()),
       directory_(directory),
       prefix_(prefix) {
+  const auto all = outputColumns(particles);
+  csvColumns_ = outputColumns(particles, outputFields(params));
+  for (const auto& c : csvColumns_)
+    if (!c.exodus.empty())
+      exodusColumns_.push_back(c);
+  // The points sit at X and move by u; domains are drawn from x, X and the half-vectors.
+  std::vector<TableColumn> geometry;
+  for (const auto& c : all)
+    if (c.field == "X" || c.field == "u" ||
+        (domains_ != Domains::none &&
+         (c.field == "x" || c.field == "domain" || c.field == "domain0")))
+      geometry.push_back(c);
+  gathered_ = unionOf(all, {csvColumns_, exodusColumns_, geometry});
   // The particles are needed here only for the Exodus meshes.
-  const auto table =
-      exodus_ ? gatherParticles(particles, ownership.comm(), totalParticles) : ParticleTable();
+  const auto table = exodus_ ? gatherParticles(particles, ownership.comm(), totalParticles,
+                                               gathered_, {TableRows::onRoot})
+                                   .front()
+                             : ParticleTable();
   if (!root_)
     return;
   std::error_code error;
@@ -264,6 +212,8 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
       corner[0] = idx[0] + ((k == 1 || k == 2) ? 1 : 0);
       if constexpr (Dim == 2)
         corner[1] = idx[1] + (k >= 2 ? 1 : 0);
+      else
+        static_assert(Dim == 1, "Output: the grid's cells of this dimension");
       grid.connectivity.push_back(static_cast<int>(g.nodeId(corner) + 1));
     }
   }
@@ -272,10 +222,9 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
 
   ExodusMesh points;
   points.dimension = Dim;
-  for (const char* X : {"X", "Y"}) {
-    if (static_cast<int>(points.coords.size()) < Dim)
-      points.coords.push_back(table.column(X));
-  }
+  for (const auto& c : gathered_)
+    if (c.field == "X")
+      points.coords.push_back(table.column(c.csv));
   points.elementType = "SPHERE";
   points.nodesPerElement = 1;
   for (GlobalId p = 0; p < totalParticles; ++p) {
@@ -284,12 +233,14 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
   }
   const std::vector<std::string> displacement = {"displacementX", "displacementY"};
   const std::vector<std::string> nodal(displacement.begin(), displacement.begin() + Dim);
+  std::vector<std::string> elements;
+  for (const auto& c : exodusColumns_)
+    elements.push_back(c.exodus);
   particleFile_ = std::make_unique<ExodusFile>(base + "_particles.exo", "impm particles", points,
-                                               nodal, exodusElementVariables<Dim>(), globalNames);
+                                               nodal, elements, globalNames);
   if (Dim == 2 && domains_ != Domains::none)
     domainFile_ = std::make_unique<ExodusFile>(base + "_domains.exo", "impm particle domains",
-                                               domainMesh(table), nodal,
-                                               exodusElementVariables<Dim>(), globalNames);
+                                               domainMesh(table), nodal, elements, globalNames);
 }
 
 namespace {
@@ -358,6 +309,14 @@ std::vector<std::vector<double>> Output<Dim>::domainDisplacements(
 }
 
 template <int Dim>
+std::vector<std::vector<double>> Output<Dim>::elementValues(const ParticleTable& table) const {
+  std::vector<std::vector<double>> values;
+  for (const auto& c : exodusColumns_)
+    values.push_back(table.column(c.csv));
+  return values;
+}
+
+template <int Dim>
 void Output<Dim>::writeFields(double time, const ParticleSet<Dim>& particles,
                               const MultiVector& gridFields, const std::vector<double>& globals) {
   const auto& comm = ownership_.comm();
@@ -368,11 +327,14 @@ void Output<Dim>::writeFields(double time, const ParticleSet<Dim>& particles,
     wanted.push_back(TableRows::inBlocks);
   if (exodus_)
     wanted.push_back(TableRows::onRoot);
-  const auto tables = gatherParticles(particles, comm, totalParticles_, wanted);
+  const auto tables = gatherParticles(particles, comm, totalParticles_, gathered_, wanted);
   if (csv_) {  // every rank formats and writes its block
     const auto& block = tables.front();
-    writeCsvTableCollectively(directory_ + "/" + prefix_ + "_particles.csv", *comm, block.names,
-                              block.columns);
+    std::vector<std::string> names;
+    std::vector<std::vector<double>> values;
+    for (const auto& c : csvColumns_)
+      names.push_back(c.csv), values.push_back(block.column(c.csv));
+    writeCsvTableCollectively(directory_ + "/" + prefix_ + "_particles.csv", *comm, names, values);
   }
   if (!exodus_)
     return;
@@ -383,14 +345,14 @@ void Output<Dim>::writeFields(double time, const ParticleSet<Dim>& particles,
   if (!root_)
     return;
   gridFile_->append(time, columnsOf(gridOnRoot, gridFields_), {}, globals);
-  const auto elements = exodusElementValues<Dim>(table);
-  if constexpr (Dim == 1) {
-    particleFile_->append(time, {table.column("u")}, elements, globals);
-  } else {
-    particleFile_->append(time, {table.column("u_x"), table.column("u_y")}, elements, globals);
-    if (domainFile_)
-      domainFile_->append(time, domainDisplacements(table), elements, globals);
-  }
+  const auto elements = elementValues(table);
+  std::vector<std::vector<double>> u;
+  for (const auto& c : gathered_)
+    if (c.field == "u")
+      u.push_back(table.column(c.csv));
+  particleFile_->append(time, u, elements, globals);
+  if (domainFile_)
+    domainFile_->append(time, domainDisplacements(table), elements, globals);
 }
 
 template <int Dim>
@@ -412,10 +374,17 @@ std::vector<std::string> Output<Dim>::files() const {
   return out;
 }
 
-template ParticleTable gatherParticles<1>(const ParticleSet<1>&, const Teuchos::RCP<const Comm>&,
-                                          GlobalId, TableRows);
-template ParticleTable gatherParticles<2>(const ParticleSet<2>&, const Teuchos::RCP<const Comm>&,
-                                          GlobalId, TableRows);
+#define IMPM_INSTANTIATE(D)                                                                        \
+  template std::vector<TableColumn> outputColumns<D>(const ParticleSet<D>&,                        \
+                                                     const std::vector<std::string>&);             \
+  template ParticleTable gatherParticles<D>(const ParticleSet<D>&,                                 \
+                                            const Teuchos::RCP<const Comm>&, GlobalId, TableRows); \
+  template std::vector<ParticleTable> gatherParticles<D>(                                          \
+      const ParticleSet<D>&, const Teuchos::RCP<const Comm>&, GlobalId,                            \
+      const std::vector<TableColumn>&, const std::vector<TableRows>&);
+IMPM_INSTANTIATE(1)
+IMPM_INSTANTIATE(2)
+#undef IMPM_INSTANTIATE
 template class Output<1>;
 template class Output<2>;
 

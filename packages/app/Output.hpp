@@ -27,27 +27,45 @@
 namespace impm {
 
 Teuchos::ParameterList outputValidParameters();
+// The names of Output/Fields (empty: every output field).
+std::vector<std::string> outputFields(const Teuchos::ParameterList& output);
+
+// One column of the particle tables: a component of a registry field, with its CSV name and
+// its Exodus element-variable name ("" when it is not one).
+struct TableColumn {
+  std::string field;
+  int component = 0;
+  std::string csv, exodus;
+};
+
+// The output columns of the particle set's fields named in `fields` (all output fields
+// when empty; id always), in registry order.  Throws InputError("Output/Fields") naming a
+// field that is not an output field, with a suggestion.
+template <int Dim>
+std::vector<TableColumn> outputColumns(const ParticleSet<Dim>& particles,
+                                       const std::vector<std::string>& fields = {});
 
 // Particle fields sorted by id, a row per particle.
 struct ParticleTable {
-  std::vector<std::string> names;
+  std::vector<std::string> names;  // CSV names
   std::vector<std::vector<double>> columns;
   const std::vector<double>& column(const std::string& name) const;
 };
 // Where gatherParticles puts the rows: all on rank 0 (empty elsewhere), or in consecutive
 // blocks of ids of about equal size, rank 0 the first.
 enum class TableRows { onRoot, inBlocks };
-// Collective.
-template <int Dim>
-ParticleTable gatherParticles(const ParticleSet<Dim>& particles,
-                              const Teuchos::RCP<const Comm>& comm, GlobalId totalParticles,
-                              TableRows rows = TableRows::onRoot);
-// Collective: one table per entry of `rows`, from a single read of the particles.
+// Collective: one table of `columns` per entry of `rows`, from a single read of the particles.
 template <int Dim>
 std::vector<ParticleTable> gatherParticles(const ParticleSet<Dim>& particles,
                                            const Teuchos::RCP<const Comm>& comm,
                                            GlobalId totalParticles,
+                                           const std::vector<TableColumn>& columns,
                                            const std::vector<TableRows>& rows);
+// Collective: every output column.
+template <int Dim>
+ParticleTable gatherParticles(const ParticleSet<Dim>& particles,
+                              const Teuchos::RCP<const Comm>& comm, GlobalId totalParticles,
+                              TableRows rows = TableRows::onRoot);
 
 template <int Dim>
 class Output {
@@ -55,7 +73,8 @@ class Output {
   // The particle domains to draw: none, the box of half-widths r1_x, r2_y (gimp), the
   // parallelogram spanned by r1, r2 (cpdi).
   enum class Domains { none, box, parallelogram };
-  // Creates the directory and the files (rank 0).  Collective.
+  // Creates the directory and the files (rank 0).  Collective.  The particle columns are
+  // those of the fields of Output/Fields (outputColumns).
   Output(const Teuchos::ParameterList& params, const std::string& directory,
          const std::string& prefix, const NodeOwnership<Dim>& ownership,
          const ParticleSet<Dim>& particles, GlobalId totalParticles,
@@ -75,6 +94,7 @@ class Output {
  private:
   ExodusMesh domainMesh(const ParticleTable& table) const;
   std::vector<std::vector<double>> domainDisplacements(const ParticleTable& table) const;
+  std::vector<std::vector<double>> elementValues(const ParticleTable& table) const;
 
   const NodeOwnership<Dim>& ownership_;
   Domains domains_;
@@ -84,6 +104,9 @@ class Output {
   GlobalId totalParticles_;
   std::size_t gridFields_;
   std::string directory_, prefix_;
+  // The CSV's columns, the Exodus element variables, and all columns gathered (theirs and
+  // the points' and domains' geometry).
+  std::vector<TableColumn> csvColumns_, exodusColumns_, gathered_;
   std::unique_ptr<ExodusFile> gridFile_, particleFile_, domainFile_;
   std::unique_ptr<CsvHistory> history_;
 };

@@ -113,8 +113,14 @@ void Simulation<Dim>::setUp(const Teuchos::ParameterList& deck) {
   bodies_ = std::make_unique<Bodies<Dim>>(deck, materialNames_, grid);
   particles_ = bodies_->createParticles(method_, ownership_->decomposition(), comm_->getRank(),
                                         materials_, kinematics_ == Kinematics::updatedLagrangian);
-  for (std::size_t m = 0; m < materials_.size(); ++m)
-    materials_[m]->initialize(particles_, static_cast<int>(m));
+  declareMaterialVariables(particles_, materials_);
+  initializeMaterials(particles_, materials_, true);
+  particles_.addDerivation([this](ParticleSet<Dim>& ps) {  // sigma_zz, an output-only field
+    for (std::size_t m = 0; m < materials_.size(); ++m)
+      materials_[m]->outOfPlaneStress(evaluationOf(ps, materials_, static_cast<int>(m), ps.F),
+                                      ps.stressZZ);
+  });
+  outputColumns(particles_, outputFields(output));  // Output/Fields names output fields
   conditions_ = createBoundaryConditions<Dim>(deck, *bodies_, grid, method_, kinematics_);
   if constexpr (Dim == 1) {
     for (const auto& c : conditions_) {
@@ -151,13 +157,6 @@ void Simulation<Dim>::checkExplicitTimeStep() const {
   if (ti.get<std::string>("Position Update") == "primer")
     std::cout << "impm: warning: the primer's position update (eq. 1.53 as printed) is "
                  "unconditionally unstable: errors grow by sqrt(1 + (w dt)^2 / 2) per step\n";
-}
-
-template <int Dim>
-void Simulation<Dim>::updateOutOfPlaneStress() {
-  for (std::size_t m = 0; m < materials_.size(); ++m)
-    materials_[m]->outOfPlaneStress(particles_, particles_.F, static_cast<int>(m),
-                                    particles_.stressZZ);
 }
 
 template <int Dim>
@@ -218,7 +217,7 @@ std::vector<std::string> Simulation<Dim>::run() {
   const Domains domains = method_ == Method::cpdi   ? Domains::parallelogram
                           : method_ == Method::gimp ? Domains::box
                                                     : Domains::none;
-  updateOutOfPlaneStress();
+  particles_.updateDerived();
   collectively(*comm_, [&] {
     output =
         std::make_unique<Output<Dim>>(deck_.sublist("Output"), outputDirectory_, prefix_,
@@ -241,12 +240,12 @@ std::vector<std::string> Simulation<Dim>::run() {
     printProgress(r, F);
     if (output->due(r.step) || r.last) {
       IMPM_TIMER("output");
-      updateOutOfPlaneStress();  // an output-only field
+      particles_.updateDerived();  // output-only fields
       collectively(*comm_, [&] { output->writeFields(r.time, particles_, grid.values(), F); });
     }
     finalTime = r.time;
   };
-  StepperContext<Dim> context{
+  StepperSetup<Dim> setup{
       *ownership_,
       method_,
       kinematics_,
@@ -257,9 +256,9 @@ std::vector<std::string> Simulation<Dim>::run() {
       [this](double t) { bodies_->applyLoads(particles_, t); },
       [this](const double* x, double* u, double* v) { bodies_->initialNodalState(x, u, v); }};
   if (dynamic)
-    DynamicStepper<Dim>(dynamicSettings(timeIntegration), context).run(onStep);
+    DynamicStepper<Dim>(dynamicSettings(timeIntegration), setup).run(onStep);
   else
-    QuasiStaticStepper<Dim>(timeIntegration, context).run(onStep);
+    QuasiStaticStepper<Dim>(timeIntegration, setup).run(onStep);
   return finish(finalTime, output->files());
 }
 

@@ -15,7 +15,7 @@
 #include "assembly/Kinematics.hpp"
 #include "solver/Contribution.hpp"
 #include "solver/NewtonSolver.hpp"
-#include "solver/StepperContext.hpp"
+#include "solver/StepperSetup.hpp"
 
 namespace impm {
 
@@ -39,7 +39,6 @@ class Simulation {
   void setUp(const Teuchos::ParameterList& deck);
   void checkExplicitTimeStep() const;
   std::vector<double> reactions() const;
-  void updateOutOfPlaneStress();
   void printHeader() const;
   void printProgress(const StepRecord& record, const std::vector<double>& F) const;
   std::vector<std::string> finish(double finalTime, const std::vector<std::string>& files) const;
@@ -51,7 +50,7 @@ class Simulation {
   Method method_;
   Kinematics kinematics_;
   std::vector<std::string> materialNames_;
-  std::vector<std::shared_ptr<Material<Dim>>> materials_;
+  Materials<Dim> materials_;
   std::unique_ptr<Bodies<Dim>> bodies_;
   ParticleSet<Dim> particles_;
   GlobalId totalParticles_ = 0;

@@ -68,10 +68,10 @@ bool isStatic(const Teuchos::ParameterList& p) {
 DynamicSettings dynamicSettings(const Teuchos::ParameterList& p) {
   DynamicSettings s;
   const bool newmark = p.get<std::string>("Type") == "newmark";
-  s.scheme = newmark ? DynamicSettings::Scheme::newmark
-             : p.get<std::string>("Position Update") == "primer"
-                 ? DynamicSettings::Scheme::primerTaylor
-                 : DynamicSettings::Scheme::centralDifference;
+  s.integrator = newmark ? DynamicSettings::Integrator::newmark
+                 : p.get<std::string>("Position Update") == "primer"
+                     ? DynamicSettings::Integrator::primerTaylor
+                     : DynamicSettings::Integrator::centralDifference;
   s.timeStep = p.get<double>("Time Step");
   s.finalTime = p.get<double>("Final Time");
   s.minTimeStep = p.get<double>("Minimum Time Step") > 0 ? p.get<double>("Minimum Time Step")

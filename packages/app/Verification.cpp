@@ -67,6 +67,7 @@ template <int Dim>
 VerificationResult Verification::check(const ParticleSet<Dim>& particles,
                                        const Teuchos::RCP<const Comm>& comm, double time, double F0,
                                        double FL) const {
+  static_assert(Dim == 1 || Dim == 2, "Verification: the exact solution's variables here");
   VerificationResult result;
   std::ostringstream line;
   line.precision(6);

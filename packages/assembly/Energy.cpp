@@ -14,13 +14,13 @@ double sumAll(const Comm& comm, double local) {
 
 }  // namespace
 
-template <int Dim>
-double kineticEnergy(const ParticleSet<Dim>& particles, const Comm& comm) {
+template <int Dim, class Space>
+double kineticEnergy(const ParticleSet<Dim, Space>& particles, const Comm& comm) {
   auto m = particles.mass;
   auto v = particles.v;
   double local = 0;
   Kokkos::parallel_reduce(
-      "impm::kineticEnergy", RangePolicy<DefaultExecSpace>(0, particles.size()),
+      "impm::kineticEnergy", RangePolicy<Space>(0, particles.size()),
       KOKKOS_LAMBDA(const int p, double& sum) {
         for (int d = 0; d < Dim; ++d)
           sum += 0.5 * m(p) * v(p, d) * v(p, d);
@@ -30,12 +30,12 @@ double kineticEnergy(const ParticleSet<Dim>& particles, const Comm& comm) {
 }
 
 template <int Dim>
-double strainEnergy(const ParticleSet<Dim>& particles,
-                    const std::vector<std::shared_ptr<Material<Dim>>>& materials,
+double strainEnergy(const ParticleSet<Dim>& particles, const Materials<Dim>& materials,
                     const Comm& comm) {
   typename ParticleSet<Dim>::Scalars W("W", particles.size());
   for (std::size_t k = 0; k < materials.size(); ++k)
-    materials[k]->energyDensity(particles, particles.F, static_cast<int>(k), W);
+    materials[k]->energyDensity(
+        evaluationOf(particles, materials, static_cast<int>(k), particles.F), W);
   auto V0 = particles.volume0;
   auto A = particles.section;
   double local = 0;
@@ -45,15 +45,15 @@ double strainEnergy(const ParticleSet<Dim>& particles,
   return sumAll(comm, local);
 }
 
-template <int Dim>
-double bodyForceWork(const ParticleSet<Dim>& particles,
-                     const typename ParticleSet<Dim>::Vectors& uBefore, double scale,
+template <int Dim, class Space>
+double bodyForceWork(const ParticleSet<Dim, Space>& particles,
+                     const typename ParticleSet<Dim, Space>::Vectors& uBefore, double scale,
                      const Comm& comm) {
   auto f = particles.force;
   auto u = particles.u;
   double local = 0;
   Kokkos::parallel_reduce(
-      "impm::bodyForceWork", RangePolicy<DefaultExecSpace>(0, particles.size()),
+      "impm::bodyForceWork", RangePolicy<Space>(0, particles.size()),
       KOKKOS_LAMBDA(const int p, double& sum) {
         for (int d = 0; d < Dim; ++d)
           sum += f(p, d) * (u(p, d) - uBefore(p, d));
@@ -62,12 +62,11 @@ double bodyForceWork(const ParticleSet<Dim>& particles,
   return scale * sumAll(comm, local);
 }
 
-#define IMPM_INSTANTIATE(D)                                                                       \
-  template double kineticEnergy<D>(const ParticleSet<D>&, const Comm&);                           \
-  template double strainEnergy<D>(const ParticleSet<D>&,                                          \
-                                  const std::vector<std::shared_ptr<Material<D>>>&, const Comm&); \
-  template double bodyForceWork<D>(const ParticleSet<D>&, const ParticleSet<D>::Vectors&, double, \
-                                   const Comm&);
+#define IMPM_INSTANTIATE(D)                                                                 \
+  template double kineticEnergy<D, DefaultExecSpace>(const ParticleSet<D>&, const Comm&);   \
+  template double strainEnergy<D>(const ParticleSet<D>&, const Materials<D>&, const Comm&); \
+  template double bodyForceWork<D, DefaultExecSpace>(                                       \
+      const ParticleSet<D>&, const ParticleSet<D>::Vectors&, double, const Comm&);
 IMPM_INSTANTIATE(1)
 IMPM_INSTANTIATE(2)
 #undef IMPM_INSTANTIATE

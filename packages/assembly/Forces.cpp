@@ -2,17 +2,17 @@
 
 namespace impm {
 
-template <int Dim>
-void addInternalForce(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryDofs,
-                      const ParticleSet<Dim>& particles,
-                      const typename ParticleSet<Dim>::Tensors& Pn, const LocalValuesMutable& f) {
+template <int Dim, class Space>
+void addInternalForce(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& entryDofs,
+                      const ParticleSet<Dim, Space>& particles,
+                      const typename ParticleSet<Dim, Space>::Tensors& Pn,
+                      const LocalValuesMutable& f) {
   auto rowPtr = map.rowPtr;
   auto grad = map.grad;
   auto section = particles.section;
   auto volume = particles.volume;
   Kokkos::parallel_for(
-      "impm::internalForce", RangePolicy<DefaultExecSpace>(0, map.numParticles()),
-      KOKKOS_LAMBDA(const int p) {
+      "impm::internalForce", RangePolicy<Space>(0, map.numParticles()), KOKKOS_LAMBDA(const int p) {
         const double w = section(p) * volume(p);
         for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k)
           for (int a = 0; a < Dim; ++a) {
@@ -24,32 +24,30 @@ void addInternalForce(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& 
       });
 }
 
-template <int Dim>
-void addExternalForce(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryDofs,
-                      const typename ParticleSet<Dim>::Vectors& force, double scale,
+template <int Dim, class Space>
+void addExternalForce(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& entryDofs,
+                      const typename ParticleSet<Dim, Space>::Vectors& force, double scale,
                       const LocalValuesMutable& f) {
   auto rowPtr = map.rowPtr;
   auto phi = map.phi;
   Kokkos::parallel_for(
-      "impm::externalForce", RangePolicy<DefaultExecSpace>(0, map.numParticles()),
-      KOKKOS_LAMBDA(const int p) {
+      "impm::externalForce", RangePolicy<Space>(0, map.numParticles()), KOKKOS_LAMBDA(const int p) {
         for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k)
           for (int a = 0; a < Dim; ++a)
             Kokkos::atomic_add(&f(entryDofs(k) + a, 0), -scale * phi(k) * force(p, a));
       });
 }
 
-template <int Dim>
-void addTangent(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryRows,
-                const Kokkos::View<LO**>& entryCols, const ParticleSet<Dim>& particles,
-                const Tangents<Dim>& An, const LocalMatrix& K) {
+template <int Dim, class Space>
+void addTangent(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& entryRows,
+                const EntryColumns<Space>& entryCols, const ParticleSet<Dim, Space>& particles,
+                const Tangents<Dim, Space>& An, const LocalMatrix& K) {
   auto rowPtr = map.rowPtr;
   auto grad = map.grad;
   auto section = particles.section;
   auto volume = particles.volume;
   Kokkos::parallel_for(
-      "impm::tangent", RangePolicy<DefaultExecSpace>(0, map.numParticles()),
-      KOKKOS_LAMBDA(const int p) {
+      "impm::tangent", RangePolicy<Space>(0, map.numParticles()), KOKKOS_LAMBDA(const int p) {
         const double w = section(p) * volume(p);
         for (std::size_t ki = rowPtr(p); ki < rowPtr(p + 1); ++ki)
           for (int a = 0; a < Dim; ++a) {
@@ -71,23 +69,18 @@ void addTangent(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryR
       });
 }
 
-template void addInternalForce<1>(const ParticleGridMap<1>&, const Kokkos::View<LO*>&,
-                                  const ParticleSet<1>&, const ParticleSet<1>::Tensors&,
-                                  const LocalValuesMutable&);
-template void addInternalForce<2>(const ParticleGridMap<2>&, const Kokkos::View<LO*>&,
-                                  const ParticleSet<2>&, const ParticleSet<2>::Tensors&,
-                                  const LocalValuesMutable&);
-template void addExternalForce<1>(const ParticleGridMap<1>&, const Kokkos::View<LO*>&,
-                                  const ParticleSet<1>::Vectors&, double,
-                                  const LocalValuesMutable&);
-template void addExternalForce<2>(const ParticleGridMap<2>&, const Kokkos::View<LO*>&,
-                                  const ParticleSet<2>::Vectors&, double,
-                                  const LocalValuesMutable&);
-template void addTangent<1>(const ParticleGridMap<1>&, const Kokkos::View<LO*>&,
-                            const Kokkos::View<LO**>&, const ParticleSet<1>&, const Tangents<1>&,
-                            const LocalMatrix&);
-template void addTangent<2>(const ParticleGridMap<2>&, const Kokkos::View<LO*>&,
-                            const Kokkos::View<LO**>&, const ParticleSet<2>&, const Tangents<2>&,
-                            const LocalMatrix&);
+#define IMPM_INSTANTIATE(D)                                                                    \
+  template void addInternalForce<D, DefaultExecSpace>(                                         \
+      const ParticleGridMap<D>&, const EntryDofs<>&, const ParticleSet<D>&,                    \
+      const ParticleSet<D>::Tensors&, const LocalValuesMutable&);                              \
+  template void addExternalForce<D, DefaultExecSpace>(                                         \
+      const ParticleGridMap<D>&, const EntryDofs<>&, const ParticleSet<D>::Vectors&, double,   \
+      const LocalValuesMutable&);                                                              \
+  template void addTangent<D, DefaultExecSpace>(const ParticleGridMap<D>&, const EntryDofs<>&, \
+                                                const EntryColumns<>&, const ParticleSet<D>&,  \
+                                                const Tangents<D>&, const LocalMatrix&);
+IMPM_INSTANTIATE(1)
+IMPM_INSTANTIATE(2)
+#undef IMPM_INSTANTIATE
 
 }  // namespace impm

@@ -14,20 +14,21 @@ namespace impm {
 
 using LocalMatrix = FECrsMatrix::local_matrix_device_type;
 
-template <int Dim>
-void addInternalForce(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryDofs,
-                      const ParticleSet<Dim>& particles,
-                      const typename ParticleSet<Dim>::Tensors& Pn, const LocalValuesMutable& f);
+template <int Dim, class Space = DefaultExecSpace>
+void addInternalForce(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& entryDofs,
+                      const ParticleSet<Dim, Space>& particles,
+                      const typename ParticleSet<Dim, Space>::Tensors& Pn,
+                      const LocalValuesMutable& f);
 
-template <int Dim>
-void addExternalForce(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryDofs,
-                      const typename ParticleSet<Dim>::Vectors& force, double scale,
+template <int Dim, class Space = DefaultExecSpace>
+void addExternalForce(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& entryDofs,
+                      const typename ParticleSet<Dim, Space>::Vectors& force, double scale,
                       const LocalValuesMutable& f);
 
 // Rows are overlap-map indices, columns indices in the matrix's column map.
-template <int Dim>
-void addTangent(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryRows,
-                const Kokkos::View<LO**>& entryCols, const ParticleSet<Dim>& particles,
-                const Tangents<Dim>& An, const LocalMatrix& K);
+template <int Dim, class Space = DefaultExecSpace>
+void addTangent(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& entryRows,
+                const EntryColumns<Space>& entryCols, const ParticleSet<Dim, Space>& particles,
+                const Tangents<Dim, Space>& An, const LocalMatrix& K);
 
 }  // namespace impm

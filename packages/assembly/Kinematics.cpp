@@ -2,17 +2,16 @@
 
 namespace impm {
 
-template <int Dim>
-void trialDeformationGradient(Kinematics kinematics, const ParticleGridMap<Dim>& map,
-                              const Kokkos::View<LO*>& entryDofs, const LocalValues& du,
-                              const typename ParticleSet<Dim>::Tensors& Fn,
-                              typename ParticleSet<Dim>::Tensors& F) {
+template <int Dim, class Space>
+void trialDeformationGradient(Kinematics kinematics, const ParticleGridMap<Dim, Space>& map,
+                              const EntryDofs<Space>& entryDofs, const LocalValues& du,
+                              const typename ParticleSet<Dim, Space>::Tensors& Fn,
+                              const typename ParticleSet<Dim, Space>::Tensors& F) {
   auto rowPtr = map.rowPtr;
   auto grad = map.grad;
   const bool total = kinematics == Kinematics::totalLagrangian;
   Kokkos::parallel_for(
-      "impm::trialF", RangePolicy<DefaultExecSpace>(0, map.numParticles()),
-      KOKKOS_LAMBDA(const int p) {
+      "impm::trialF", RangePolicy<Space>(0, map.numParticles()), KOKKOS_LAMBDA(const int p) {
         double H[Dim][Dim] = {};  // grad du
         for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k)
           for (int a = 0; a < Dim; ++a)
@@ -32,17 +31,20 @@ void trialDeformationGradient(Kinematics kinematics, const ParticleGridMap<Dim>&
       });
 }
 
-template <int Dim>
-void stressRelativeToStepStart(Kinematics kinematics, const typename ParticleSet<Dim>::Tensors& Fn,
-                               const typename ParticleSet<Dim>::Tensors& P, const Tangents<Dim>& A,
-                               typename ParticleSet<Dim>::Tensors& Pn, Tangents<Dim>& An) {
+template <int Dim, class Space>
+void stressRelativeToStepStart(Kinematics kinematics,
+                               const typename ParticleSet<Dim, Space>::Tensors& Fn,
+                               const typename ParticleSet<Dim, Space>::Tensors& P,
+                               const Tangents<Dim, Space>& A,
+                               const typename ParticleSet<Dim, Space>::Tensors& Pn,
+                               const Tangents<Dim, Space>& An) {
   if (kinematics == Kinematics::totalLagrangian) {
     Kokkos::deep_copy(Pn, P);
     Kokkos::deep_copy(An, A);
     return;
   }
   Kokkos::parallel_for(
-      "impm::pushForwardToStepStart", RangePolicy<DefaultExecSpace>(0, Fn.extent(0)),
+      "impm::pushForwardToStepStart", RangePolicy<Space>(0, Fn.extent(0)),
       KOKKOS_LAMBDA(const int p) {
         const double J = determinant<Dim>(Fn, p);
         for (int a = 0; a < Dim; ++a)
@@ -65,17 +67,15 @@ void stressRelativeToStepStart(Kinematics kinematics, const typename ParticleSet
       });
 }
 
-template void trialDeformationGradient<1>(Kinematics, const ParticleGridMap<1>&,
-                                          const Kokkos::View<LO*>&, const LocalValues&,
-                                          const ParticleSet<1>::Tensors&, ParticleSet<1>::Tensors&);
-template void trialDeformationGradient<2>(Kinematics, const ParticleGridMap<2>&,
-                                          const Kokkos::View<LO*>&, const LocalValues&,
-                                          const ParticleSet<2>::Tensors&, ParticleSet<2>::Tensors&);
-template void stressRelativeToStepStart<1>(Kinematics, const ParticleSet<1>::Tensors&,
-                                           const ParticleSet<1>::Tensors&, const Tangents<1>&,
-                                           ParticleSet<1>::Tensors&, Tangents<1>&);
-template void stressRelativeToStepStart<2>(Kinematics, const ParticleSet<2>::Tensors&,
-                                           const ParticleSet<2>::Tensors&, const Tangents<2>&,
-                                           ParticleSet<2>::Tensors&, Tangents<2>&);
+#define IMPM_INSTANTIATE(D)                                                          \
+  template void trialDeformationGradient<D, DefaultExecSpace>(                       \
+      Kinematics, const ParticleGridMap<D>&, const EntryDofs<>&, const LocalValues&, \
+      const ParticleSet<D>::Tensors&, const ParticleSet<D>::Tensors&);               \
+  template void stressRelativeToStepStart<D, DefaultExecSpace>(                      \
+      Kinematics, const ParticleSet<D>::Tensors&, const ParticleSet<D>::Tensors&,    \
+      const Tangents<D>&, const ParticleSet<D>::Tensors&, const Tangents<D>&);
+IMPM_INSTANTIATE(1)
+IMPM_INSTANTIATE(2)
+#undef IMPM_INSTANTIATE
 
 }  // namespace impm

@@ -10,9 +10,13 @@
 //    step and F = (I + sum_i du_i (x) G_ip) F^n.  Forces are integrated over the
 //    configuration at the start of the step with the first Piola stress relative to it,
 //    P^n = P (F^n)^T / J^n, and its tangent A^n_aBcD = A_aEcG F^n_BE F^n_DG / J^n.
+//
+// Every kernel of this package takes the execution space as a template parameter; the
+// libraries instantiate Kokkos' default space (Debian's Trilinos: Serial).
 
 #include "basis/ParticleGridMap.hpp"
 #include "core/ParticleSet.hpp"
+#include "core/Tensor.hpp"
 #include "core/TpetraTypes.hpp"
 #include "material/Material.hpp"
 
@@ -20,30 +24,30 @@ namespace impm {
 
 enum class Kinematics { totalLagrangian, updatedLagrangian };
 
-template <int Dim>
-using Tangents = typename Material<Dim>::Tangents;
-// Local values of an overlap vector: (local index, column).
+template <int Dim, class Space = DefaultExecSpace>
+using Tangents = typename Material<Dim, Space>::Tangents;
+// Per map entry k: the overlap-map index of the first component of node(k) (EntryDofs.hpp).
+template <class Space = DefaultExecSpace>
+using EntryDofs = Kokkos::View<LO*, typename Space::memory_space>;
+// Per map entry and component: the index in the Jacobian's column map.
+template <class Space = DefaultExecSpace>
+using EntryColumns = Kokkos::View<LO**, typename Space::memory_space>;
+// Local values of an overlap vector: (local index, column).  Tpetra's own memory space.
 using LocalValues = Kokkos::View<const double**, Kokkos::LayoutLeft, DefaultMemSpace>;
 using LocalValuesMutable = Kokkos::View<double**, Kokkos::LayoutLeft, DefaultMemSpace>;
 
-template <int Dim>
-void trialDeformationGradient(Kinematics kinematics, const ParticleGridMap<Dim>& map,
-                              const Kokkos::View<LO*>& entryDofs, const LocalValues& du,
-                              const typename ParticleSet<Dim>::Tensors& Fn,
-                              typename ParticleSet<Dim>::Tensors& F);
+template <int Dim, class Space = DefaultExecSpace>
+void trialDeformationGradient(Kinematics kinematics, const ParticleGridMap<Dim, Space>& map,
+                              const EntryDofs<Space>& entryDofs, const LocalValues& du,
+                              const typename ParticleSet<Dim, Space>::Tensors& Fn,
+                              const typename ParticleSet<Dim, Space>::Tensors& F);
 
-template <int Dim>
-void stressRelativeToStepStart(Kinematics kinematics, const typename ParticleSet<Dim>::Tensors& Fn,
-                               const typename ParticleSet<Dim>::Tensors& P, const Tangents<Dim>& A,
-                               typename ParticleSet<Dim>::Tensors& Pn, Tangents<Dim>& An);
-
-// Determinant of the Dim x Dim matrix of particle p.
-template <int Dim>
-KOKKOS_INLINE_FUNCTION double determinant(const typename ParticleSet<Dim>::Tensors& F, int p) {
-  if constexpr (Dim == 1)
-    return F(p, 0, 0);
-  else
-    return F(p, 0, 0) * F(p, 1, 1) - F(p, 0, 1) * F(p, 1, 0);
-}
+template <int Dim, class Space = DefaultExecSpace>
+void stressRelativeToStepStart(Kinematics kinematics,
+                               const typename ParticleSet<Dim, Space>::Tensors& Fn,
+                               const typename ParticleSet<Dim, Space>::Tensors& P,
+                               const Tangents<Dim, Space>& A,
+                               const typename ParticleSet<Dim, Space>::Tensors& Pn,
+                               const Tangents<Dim, Space>& An);
 
 }  // namespace impm

@@ -2,14 +2,15 @@
 
 namespace impm {
 
-template <int Dim>
-void particleToGrid(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryDofs,
-                    const typename ParticleSet<Dim>::Scalars& mass,
-                    const typename ParticleSet<Dim>::Vectors& q, const LocalValuesMutable& f) {
+template <int Dim, class Space>
+void particleToGrid(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& entryDofs,
+                    const typename ParticleSet<Dim, Space>::Scalars& mass,
+                    const typename ParticleSet<Dim, Space>::Vectors& q,
+                    const LocalValuesMutable& f) {
   auto rowPtr = map.rowPtr;
   auto phi = map.phi;
   Kokkos::parallel_for(
-      "impm::particleToGrid", RangePolicy<DefaultExecSpace>(0, map.numParticles()),
+      "impm::particleToGrid", RangePolicy<Space>(0, map.numParticles()),
       KOKKOS_LAMBDA(const int p) {
         for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k)
           for (int d = 0; d < Dim; ++d)
@@ -17,31 +18,30 @@ void particleToGrid(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& en
       });
 }
 
-template <int Dim>
-void addLumpedMass(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryDofs,
-                   const typename ParticleSet<Dim>::Scalars& mass, const LocalValuesMutable& m) {
+template <int Dim, class Space>
+void addLumpedMass(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& entryDofs,
+                   const typename ParticleSet<Dim, Space>::Scalars& mass,
+                   const LocalValuesMutable& m) {
   auto rowPtr = map.rowPtr;
   auto phi = map.phi;
   Kokkos::parallel_for(
-      "impm::lumpedMass", RangePolicy<DefaultExecSpace>(0, map.numParticles()),
-      KOKKOS_LAMBDA(const int p) {
+      "impm::lumpedMass", RangePolicy<Space>(0, map.numParticles()), KOKKOS_LAMBDA(const int p) {
         for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k)
           for (int d = 0; d < Dim; ++d)
             Kokkos::atomic_add(&m(entryDofs(k) + d, 0), mass(p) * phi(k));
       });
 }
 
-template <int Dim>
-void addInertiaForce(MassType type, const ParticleGridMap<Dim>& map,
-                     const Kokkos::View<LO*>& entryDofs,
-                     const typename ParticleSet<Dim>::Scalars& mass, const LocalValues& a,
+template <int Dim, class Space>
+void addInertiaForce(MassType type, const ParticleGridMap<Dim, Space>& map,
+                     const EntryDofs<Space>& entryDofs,
+                     const typename ParticleSet<Dim, Space>::Scalars& mass, const LocalValues& a,
                      const LocalValuesMutable& f) {
   auto rowPtr = map.rowPtr;
   auto phi = map.phi;
   const bool consistent = type == MassType::consistent;
   Kokkos::parallel_for(
-      "impm::inertiaForce", RangePolicy<DefaultExecSpace>(0, map.numParticles()),
-      KOKKOS_LAMBDA(const int p) {
+      "impm::inertiaForce", RangePolicy<Space>(0, map.numParticles()), KOKKOS_LAMBDA(const int p) {
         double ap[Dim] = {};  // the particle's acceleration sum_j phi_jp a_j
         if (consistent)
           for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k)
@@ -55,16 +55,15 @@ void addInertiaForce(MassType type, const ParticleGridMap<Dim>& map,
       });
 }
 
-template <int Dim>
-void addMassMatrix(MassType type, double scale, const ParticleGridMap<Dim>& map,
-                   const Kokkos::View<LO*>& entryRows, const Kokkos::View<LO**>& entryCols,
-                   const typename ParticleSet<Dim>::Scalars& mass, const LocalMatrix& K) {
+template <int Dim, class Space>
+void addMassMatrix(MassType type, double scale, const ParticleGridMap<Dim, Space>& map,
+                   const EntryDofs<Space>& entryRows, const EntryColumns<Space>& entryCols,
+                   const typename ParticleSet<Dim, Space>::Scalars& mass, const LocalMatrix& K) {
   auto rowPtr = map.rowPtr;
   auto phi = map.phi;
   const bool consistent = type == MassType::consistent;
   Kokkos::parallel_for(
-      "impm::massMatrix", RangePolicy<DefaultExecSpace>(0, map.numParticles()),
-      KOKKOS_LAMBDA(const int p) {
+      "impm::massMatrix", RangePolicy<Space>(0, map.numParticles()), KOKKOS_LAMBDA(const int p) {
         for (std::size_t ki = rowPtr(p); ki < rowPtr(p + 1); ++ki)
           for (int d = 0; d < Dim; ++d) {
             const LO row = entryRows(ki) + d;
@@ -83,16 +82,17 @@ void addMassMatrix(MassType type, double scale, const ParticleGridMap<Dim>& map,
       });
 }
 
-template <int Dim>
-void gridToParticleVelocity(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryDofs,
-                            const LocalValues& vOld, const LocalValues& vNew,
-                            const LocalValues& aNew, double flip, ParticleSet<Dim>& particles) {
+template <int Dim, class Space>
+void gridToParticleVelocity(const ParticleGridMap<Dim, Space>& map,
+                            const EntryDofs<Space>& entryDofs, const LocalValues& vOld,
+                            const LocalValues& vNew, const LocalValues& aNew, double flip,
+                            const ParticleSet<Dim, Space>& particles) {
   auto rowPtr = map.rowPtr;
   auto phi = map.phi;
   auto v = particles.v;
   auto a = particles.a;
   Kokkos::parallel_for(
-      "impm::gridToParticleVelocity", RangePolicy<DefaultExecSpace>(0, map.numParticles()),
+      "impm::gridToParticleVelocity", RangePolicy<Space>(0, map.numParticles()),
       KOKKOS_LAMBDA(const int p) {
         for (int d = 0; d < Dim; ++d) {
           double change = 0, pic = 0, acc = 0;
@@ -109,20 +109,21 @@ void gridToParticleVelocity(const ParticleGridMap<Dim>& map, const Kokkos::View<
 }
 
 #define IMPM_INSTANTIATE(D)                                                                       \
-  template void particleToGrid<D>(const ParticleGridMap<D>&, const Kokkos::View<LO*>&,            \
-                                  const ParticleSet<D>::Scalars&, const ParticleSet<D>::Vectors&, \
-                                  const LocalValuesMutable&);                                     \
-  template void addLumpedMass<D>(const ParticleGridMap<D>&, const Kokkos::View<LO*>&,             \
-                                 const ParticleSet<D>::Scalars&, const LocalValuesMutable&);      \
-  template void addInertiaForce<D>(MassType, const ParticleGridMap<D>&, const Kokkos::View<LO*>&, \
-                                   const ParticleSet<D>::Scalars&, const LocalValues&,            \
-                                   const LocalValuesMutable&);                                    \
-  template void addMassMatrix<D>(MassType, double, const ParticleGridMap<D>&,                     \
-                                 const Kokkos::View<LO*>&, const Kokkos::View<LO**>&,             \
-                                 const ParticleSet<D>::Scalars&, const LocalMatrix&);             \
-  template void gridToParticleVelocity<D>(const ParticleGridMap<D>&, const Kokkos::View<LO*>&,    \
-                                          const LocalValues&, const LocalValues&,                 \
-                                          const LocalValues&, double, ParticleSet<D>&);
+  template void particleToGrid<D, DefaultExecSpace>(                                              \
+      const ParticleGridMap<D>&, const EntryDofs<>&, const ParticleSet<D>::Scalars&,              \
+      const ParticleSet<D>::Vectors&, const LocalValuesMutable&);                                 \
+  template void addLumpedMass<D, DefaultExecSpace>(const ParticleGridMap<D>&, const EntryDofs<>&, \
+                                                   const ParticleSet<D>::Scalars&,                \
+                                                   const LocalValuesMutable&);                    \
+  template void addInertiaForce<D, DefaultExecSpace>(                                             \
+      MassType, const ParticleGridMap<D>&, const EntryDofs<>&, const ParticleSet<D>::Scalars&,    \
+      const LocalValues&, const LocalValuesMutable&);                                             \
+  template void addMassMatrix<D, DefaultExecSpace>(                                               \
+      MassType, double, const ParticleGridMap<D>&, const EntryDofs<>&, const EntryColumns<>&,     \
+      const ParticleSet<D>::Scalars&, const LocalMatrix&);                                        \
+  template void gridToParticleVelocity<D, DefaultExecSpace>(                                      \
+      const ParticleGridMap<D>&, const EntryDofs<>&, const LocalValues&, const LocalValues&,      \
+      const LocalValues&, double, const ParticleSet<D>&);
 IMPM_INSTANTIATE(1)
 IMPM_INSTANTIATE(2)
 #undef IMPM_INSTANTIATE

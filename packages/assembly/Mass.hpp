@@ -14,35 +14,38 @@ namespace impm {
 enum class MassType { lumped, consistent };
 
 // f(i, d) += sum_p m_p phi_ip q_p,d for every component d.
-template <int Dim>
-void particleToGrid(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryDofs,
-                    const typename ParticleSet<Dim>::Scalars& mass,
-                    const typename ParticleSet<Dim>::Vectors& q, const LocalValuesMutable& f);
+template <int Dim, class Space = DefaultExecSpace>
+void particleToGrid(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& entryDofs,
+                    const typename ParticleSet<Dim, Space>::Scalars& mass,
+                    const typename ParticleSet<Dim, Space>::Vectors& q,
+                    const LocalValuesMutable& f);
 
 // m_i for every component (the lumped mass, and the row sums of the consistent mass).
-template <int Dim>
-void addLumpedMass(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryDofs,
-                   const typename ParticleSet<Dim>::Scalars& mass, const LocalValuesMutable& m);
+template <int Dim, class Space = DefaultExecSpace>
+void addLumpedMass(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& entryDofs,
+                   const typename ParticleSet<Dim, Space>::Scalars& mass,
+                   const LocalValuesMutable& m);
 
 // f += M a (a: grid accelerations, overlap-local).
-template <int Dim>
-void addInertiaForce(MassType type, const ParticleGridMap<Dim>& map,
-                     const Kokkos::View<LO*>& entryDofs,
-                     const typename ParticleSet<Dim>::Scalars& mass, const LocalValues& a,
+template <int Dim, class Space = DefaultExecSpace>
+void addInertiaForce(MassType type, const ParticleGridMap<Dim, Space>& map,
+                     const EntryDofs<Space>& entryDofs,
+                     const typename ParticleSet<Dim, Space>::Scalars& mass, const LocalValues& a,
                      const LocalValuesMutable& f);
 
 // K += scale M (rows: overlap-map indices, columns: the matrix's column map).
-template <int Dim>
-void addMassMatrix(MassType type, double scale, const ParticleGridMap<Dim>& map,
-                   const Kokkos::View<LO*>& entryRows, const Kokkos::View<LO**>& entryCols,
-                   const typename ParticleSet<Dim>::Scalars& mass, const LocalMatrix& K);
+template <int Dim, class Space = DefaultExecSpace>
+void addMassMatrix(MassType type, double scale, const ParticleGridMap<Dim, Space>& map,
+                   const EntryDofs<Space>& entryRows, const EntryColumns<Space>& entryCols,
+                   const typename ParticleSet<Dim, Space>::Scalars& mass, const LocalMatrix& K);
 
 // Particle velocities and accelerations from the grid after a step:
 //   FLIP v_p += sum_i phi_ip (v_i^new - v_i^old),  PIC v_p = sum_i phi_ip v_i^new,
 //   v_p = flip * FLIP + (1 - flip) * PIC,  a_p = sum_i phi_ip a_i^new.
-template <int Dim>
-void gridToParticleVelocity(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryDofs,
-                            const LocalValues& vOld, const LocalValues& vNew,
-                            const LocalValues& aNew, double flip, ParticleSet<Dim>& particles);
+template <int Dim, class Space = DefaultExecSpace>
+void gridToParticleVelocity(const ParticleGridMap<Dim, Space>& map,
+                            const EntryDofs<Space>& entryDofs, const LocalValues& vOld,
+                            const LocalValues& vNew, const LocalValues& aNew, double flip,
+                            const ParticleSet<Dim, Space>& particles);
 
 }  // namespace impm

@@ -2,11 +2,12 @@
 
 namespace impm {
 
-template <int Dim>
-void updateParticles(Kinematics kinematics, const ParticleGridMap<Dim>& map,
-                     const Kokkos::View<LO*>& entryDofs, const LocalValues& du,
-                     const typename ParticleSet<Dim>::Tensors& F,
-                     const typename ParticleSet<Dim>::Tensors& P, ParticleSet<Dim>& particles) {
+template <int Dim, class Space>
+void updateParticles(Kinematics kinematics, const ParticleGridMap<Dim, Space>& map,
+                     const EntryDofs<Space>& entryDofs, const LocalValues& du,
+                     const typename ParticleSet<Dim, Space>::Tensors& F,
+                     const typename ParticleSet<Dim, Space>::Tensors& P,
+                     const ParticleSet<Dim, Space>& particles) {
   auto rowPtr = map.rowPtr;
   auto phi = map.phi;
   auto u = particles.u;
@@ -19,7 +20,7 @@ void updateParticles(Kinematics kinematics, const ParticleGridMap<Dim>& map,
   auto domain0 = particles.domain0;
   const bool moves = kinematics == Kinematics::updatedLagrangian;
   Kokkos::parallel_for(
-      "impm::updateParticles", RangePolicy<DefaultExecSpace>(0, map.numParticles()),
+      "impm::updateParticles", RangePolicy<Space>(0, map.numParticles()),
       KOKKOS_LAMBDA(const int p) {
         for (int a = 0; a < Dim; ++a) {
           double dup = 0;
@@ -52,11 +53,12 @@ void updateParticles(Kinematics kinematics, const ParticleGridMap<Dim>& map,
       });
 }
 
-template void updateParticles<1>(Kinematics, const ParticleGridMap<1>&, const Kokkos::View<LO*>&,
-                                 const LocalValues&, const ParticleSet<1>::Tensors&,
-                                 const ParticleSet<1>::Tensors&, ParticleSet<1>&);
-template void updateParticles<2>(Kinematics, const ParticleGridMap<2>&, const Kokkos::View<LO*>&,
-                                 const LocalValues&, const ParticleSet<2>::Tensors&,
-                                 const ParticleSet<2>::Tensors&, ParticleSet<2>&);
+#define IMPM_INSTANTIATE(D)                                                          \
+  template void updateParticles<D, DefaultExecSpace>(                                \
+      Kinematics, const ParticleGridMap<D>&, const EntryDofs<>&, const LocalValues&, \
+      const ParticleSet<D>::Tensors&, const ParticleSet<D>::Tensors&, const ParticleSet<D>&);
+IMPM_INSTANTIATE(1)
+IMPM_INSTANTIATE(2)
+#undef IMPM_INSTANTIATE
 
 }  // namespace impm

@@ -11,10 +11,11 @@
 
 namespace impm {
 
-template <int Dim>
-void updateParticles(Kinematics kinematics, const ParticleGridMap<Dim>& map,
-                     const Kokkos::View<LO*>& entryDofs, const LocalValues& du,
-                     const typename ParticleSet<Dim>::Tensors& F,
-                     const typename ParticleSet<Dim>::Tensors& P, ParticleSet<Dim>& particles);
+template <int Dim, class Space = DefaultExecSpace>
+void updateParticles(Kinematics kinematics, const ParticleGridMap<Dim, Space>& map,
+                     const EntryDofs<Space>& entryDofs, const LocalValues& du,
+                     const typename ParticleSet<Dim, Space>::Tensors& F,
+                     const typename ParticleSet<Dim, Space>::Tensors& P,
+                     const ParticleSet<Dim, Space>& particles);
 
 }  // namespace impm

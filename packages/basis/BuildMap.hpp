@@ -1,5 +1,5 @@
 #pragma once
-// Builds the ragged particle-grid map (eq. 1.39-1.40) from any weight scheme.  A scheme says
+// Builds the ragged particle-grid map (eq. 1.39-1.40) from any weights.  A weights type says
 // which box of grid nodes a particle may touch (nodeBox) and the weights for one node
 // (evaluate); entries whose weights vanish are left out, so Y lists exactly the nodes whose
 // basis function is non-zero somewhere on the particle's integration domain.
@@ -52,11 +52,11 @@ KOKKOS_INLINE_FUNCTION bool negligible(const GridGeometry<Dim>& grid, double phi
 
 }  // namespace detail
 
-template <int Dim, class Space, class Scheme>
-ParticleGridMap<Dim, Space> buildParticleGridMap(const Scheme& scheme,
+template <int Dim, class Space, class Weights>
+ParticleGridMap<Dim, Space> buildParticleGridMap(const Weights& weights,
                                                  const ParticleSet<Dim, Space>& particles) {
   using Exec = typename Space::execution_space;
-  const GridGeometry<Dim> grid = scheme.grid;
+  const GridGeometry<Dim> grid = weights.grid;
   const int n = static_cast<int>(particles.size());
   ParticleGridMap<Dim, Space> map;
   map.rowPtr = Kokkos::View<std::size_t*, typename Space::memory_space>("Y rowPtr", n + 1);
@@ -68,7 +68,7 @@ ParticleGridMap<Dim, Space> buildParticleGridMap(const Scheme& scheme,
       "impm::countMapEntries", Kokkos::RangePolicy<Exec>(0, n),
       KOKKOS_LAMBDA(const int p, int& outside) {
         int lo[Dim] = {}, hi[Dim] = {};
-        if (!scheme.nodeBox(p, lo, hi, kGridTolerance)) {
+        if (!weights.nodeBox(p, lo, hi, kGridTolerance)) {
           if (p < outside)
             outside = p;
           rowPtr(p + 1) = 0;
@@ -77,7 +77,7 @@ ParticleGridMap<Dim, Space> buildParticleGridMap(const Scheme& scheme,
         std::size_t count = 0;
         detail::forEachNodeInBox<Dim>(grid, lo, hi, [&](const int* idx, GlobalId) {
           double phi, grad[Dim];
-          scheme.evaluate(p, lo, idx, phi, grad);
+          weights.evaluate(p, lo, idx, phi, grad);
           if (!detail::negligible<Dim>(grid, phi, grad))
             ++count;
         });
@@ -117,11 +117,11 @@ ParticleGridMap<Dim, Space> buildParticleGridMap(const Scheme& scheme,
   Kokkos::parallel_for(
       "impm::fillMapEntries", Kokkos::RangePolicy<Exec>(0, n), KOKKOS_LAMBDA(const int p) {
         int lo[Dim] = {}, hi[Dim] = {};
-        scheme.nodeBox(p, lo, hi, kGridTolerance);
+        weights.nodeBox(p, lo, hi, kGridTolerance);
         std::size_t k = rowPtr(p);
         detail::forEachNodeInBox<Dim>(grid, lo, hi, [&](const int* idx, GlobalId id) {
           double phi, grad[Dim];
-          scheme.evaluate(p, lo, idx, phi, grad);
+          weights.evaluate(p, lo, idx, phi, grad);
           if (detail::negligible<Dim>(grid, phi, grad))
             return;
           node(k) = id;

@@ -1,9 +1,9 @@
 #include "basis/Method.hpp"
 
 #include "basis/BuildMap.hpp"
-#include "basis/CpdiScheme.hpp"
-#include "basis/GimpScheme.hpp"
-#include "basis/PointScheme.hpp"
+#include "basis/CpdiWeights.hpp"
+#include "basis/GimpWeights.hpp"
+#include "basis/PointWeights.hpp"
 #include "core/Errors.hpp"
 
 namespace impm {
@@ -31,11 +31,11 @@ ParticleGridMap<Dim, Space> buildParticleGridMap(Method method, const GridGeomet
   switch (method) {
     case Method::fem:
     case Method::mpm:
-      return buildParticleGridMap(PointScheme<Dim, Space>(grid, particles), particles);
+      return buildParticleGridMap(PointWeights<Dim, Space>(grid, particles), particles);
     case Method::gimp:
-      return buildParticleGridMap(GimpScheme<Dim, Space>(grid, particles), particles);
+      return buildParticleGridMap(GimpWeights<Dim, Space>(grid, particles), particles);
     case Method::cpdi:
-      return buildParticleGridMap(CpdiScheme<Dim, Space>(grid, particles), particles);
+      return buildParticleGridMap(CpdiWeights<Dim, Space>(grid, particles), particles);
   }
   throw std::logic_error("unhandled method");
 }

@@ -74,11 +74,12 @@ bool DirichletNodes<Dim>::selects(const int idx[Dim]) const {
 
 template <int Dim>
 double DirichletNodes<Dim>::prescribed(const double* x, double time, double loadFactor) const {
+  static_assert(Dim == 1 || Dim == 2, "DirichletNodes: the formula variables of this dimension");
   return loadFactor * value_(x[0], Dim > 1 ? x[Dim - 1] : 0.0, time);
 }
 
 template <int Dim>
-void DirichletNodes<Dim>::constraints(const StepContext<Dim>& ctx,
+void DirichletNodes<Dim>::constraints(const ContributionContext<Dim>& ctx,
                                       std::vector<std::pair<GO, double>>& out) const {
   for (const GlobalId node : ctx.dofs.ownedActiveNodes()) {
     int idx[Dim];
@@ -95,9 +96,17 @@ void DirichletNodes<Dim>::constraints(const StepContext<Dim>& ctx,
 }
 
 template <int Dim>
-void DirichletNodes<Dim>::commit(const StepContext<Dim>& ctx, const HostValues& /*x*/) {
+void DirichletNodes<Dim>::commit(const ContributionContext<Dim>& ctx, const HostValues& /*x*/) {
   committedTime_ = ctx.time;
   committedLoad_ = ctx.loadFactor;
+}
+
+template <int Dim>
+void DirichletNodes<Dim>::restore(const std::vector<double>& state) {
+  if (state.size() != 2)
+    throw std::invalid_argument("a Dirichlet condition's state has 2 values, not " +
+                                std::to_string(state.size()));
+  committedTime_ = state[0], committedLoad_ = state[1];
 }
 
 template class DirichletNodes<1>;

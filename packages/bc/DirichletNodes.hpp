@@ -27,9 +27,12 @@ class DirichletNodes : public Contribution<Dim> {
   DirichletNodes(const std::string& name, const Teuchos::ParameterList& params,
                  const GridGeometry<Dim>& grid, double initialLoadFactor);
 
-  void constraints(const StepContext<Dim>& ctx,
+  void constraints(const ContributionContext<Dim>& ctx,
                    std::vector<std::pair<GO, double>>& out) const override;
-  void commit(const StepContext<Dim>& ctx, const HostValues& x) override;
+  void commit(const ContributionContext<Dim>& ctx, const HostValues& x) override;
+  // The time and load factor of the last commit (the prescribed values reached).
+  std::vector<double> state() const override { return {committedTime_, committedLoad_}; }
+  void restore(const std::vector<double>& state) override;
 
  private:
   bool selects(const int idx[Dim]) const;
@@ -37,7 +40,7 @@ class DirichletNodes : public Contribution<Dim> {
 
   GridGeometry<Dim> grid_;
   int component_;
-  std::array<int, 2> lo_{}, hi_{};  // selected node index range per direction (inclusive)
+  std::array<int, Dim> lo_{}, hi_{};  // selected node index range per direction (inclusive)
   Formula value_;
   double committedTime_ = 0.0, committedLoad_;
 };

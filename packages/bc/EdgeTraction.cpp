@@ -25,8 +25,8 @@ Teuchos::ParameterList EdgeTraction::validParameters() {
 }
 
 EdgeTraction::EdgeTraction(const std::string& name, const Teuchos::ParameterList& params, int body,
-                           const Shape& shape, Kinematics kinematics)
-    : name_(name), body_(body), shape_(shape), kinematics_(kinematics) {
+                           std::function<bool(const double*)> inside, Kinematics kinematics)
+    : name_(name), body_(body), inside_(std::move(inside)), kinematics_(kinematics) {
   const std::string path = "Boundary Conditions/" + name + "/";
   const auto& region = params.get<Teuchos::Array<double>>("Region");
   for (int k = 0; k < 4; ++k)
@@ -44,21 +44,20 @@ EdgeTraction::EdgeTraction(const std::string& name, const Teuchos::ParameterList
   }
 }
 
-void EdgeTraction::addResidual(const StepContext<2>& ctx, const HostValues& /*x*/,
+void EdgeTraction::addResidual(const ContributionContext<2>& ctx, const HostValues& /*x*/,
                                const HostValuesMutable& f) const {
-  const auto& ps = ctx.particles;
-  auto body = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.body);
-  auto id = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.id);
-  auto X = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.X);
-  auto r0 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.domain0);
+  const auto host = ctx.particles.mirror(Kokkos::DefaultHostExecutionSpace());
+  const auto& body = host.body;
+  const auto& id = host.id;
+  const auto& X = host.X;
+  const auto& r0 = host.domain0;
   const bool total = kinematics_ == Kinematics::totalLagrangian;
-  auto xs = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), total ? ps.X : ps.x);
-  auto rs =
-      Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), total ? ps.domain0 : ps.domain);
+  const auto& xs = total ? host.X : host.x;  // where the faces are during the step
+  const auto& rs = total ? host.domain0 : host.domain;
   const auto& grid = ctx.grid;
   const auto& overlap = *ctx.dofs.overlapMap();
   const double tol = 1e-9;
-  for (std::size_t p = 0; p < ps.size(); ++p) {
+  for (std::size_t p = 0; p < host.size(); ++p) {
     if (body(p) != body_)
       continue;
     for (int k = 0; k < 2; ++k)  // faces +-r_k; the other half-vector spans the face
@@ -70,7 +69,7 @@ void EdgeTraction::addResidual(const StepContext<2>& ctx, const HostValues& /*x*
           beyond[d] = mid[d] + 1e-6 * s * r0(p, d, k);
         }
         if (mid[0] < box_[0] - tol || mid[0] > box_[1] + tol || mid[1] < box_[2] - tol ||
-            mid[1] > box_[3] + tol || shape_.contains(beyond))
+            mid[1] > box_[3] + tol || inside_(beyond))
           continue;
         const double length = 2.0 * std::hypot(r0(p, 0, o), r0(p, 1, o));
         double t[2];

@@ -15,9 +15,9 @@
 #include <array>
 #include <string>
 
+#include <functional>
 #include "assembly/Kinematics.hpp"
 #include "core/Formula.hpp"
-#include "core/Shape.hpp"
 #include "solver/Contribution.hpp"
 
 namespace impm {
@@ -26,17 +26,18 @@ class EdgeTraction : public Contribution<2> {
  public:
   static Teuchos::ParameterList validParameters();
 
-  // body: index of the body the traction acts on; shape: its reference shape.
+  // body: index of the body the traction acts on; inside: whether a point lies in the
+  // body's reference shape.
   EdgeTraction(const std::string& name, const Teuchos::ParameterList& params, int body,
-               const Shape& shape, Kinematics kinematics);
+               std::function<bool(const double*)> inside, Kinematics kinematics);
 
-  void addResidual(const StepContext<2>& ctx, const HostValues& x,
+  void addResidual(const ContributionContext<2>& ctx, const HostValues& x,
                    const HostValuesMutable& f) const override;
 
  private:
   std::string name_;
   int body_;
-  Shape shape_;
+  std::function<bool(const double*)> inside_;
   Kinematics kinematics_;
   std::array<double, 4> box_;
   std::array<Formula, 2> traction_;

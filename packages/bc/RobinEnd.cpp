@@ -64,7 +64,8 @@ void RobinEnd::prepare(const NodeOwnership<1>& ownership, std::vector<ExtraDof>&
       touched.push_back(support_.node[k]);
 }
 
-void RobinEnd::couplings(const StepContext<1>& ctx, std::vector<std::pair<GO, GO>>& out) const {
+void RobinEnd::couplings(const ContributionContext<1>& ctx,
+                         std::vector<std::pair<GO, GO>>& out) const {
   if (!owner_)
     return;
   const GO F = ctx.dofs.extraDof(ctx.firstExtra);
@@ -76,16 +77,16 @@ void RobinEnd::couplings(const StepContext<1>& ctx, std::vector<std::pair<GO, GO
   }
 }
 
-void RobinEnd::initialGuess(const StepContext<1>& ctx, Vector& x) const {
+void RobinEnd::initialGuess(const ContributionContext<1>& ctx, Vector& x) const {
   if (owner_)
     x.replaceGlobalValue(ctx.dofs.extraDof(ctx.firstExtra), force_);
 }
 
-double RobinEnd::gamma(const StepContext<1>& ctx) const {
+double RobinEnd::gamma(const ContributionContext<1>& ctx) const {
   return ctx.loadFactor * gamma_(ctx.time);
 }
 
-void RobinEnd::addResidual(const StepContext<1>& ctx, const HostValues& x,
+void RobinEnd::addResidual(const ContributionContext<1>& ctx, const HostValues& x,
                            const HostValuesMutable& f) const {
   if (!owner_)
     return;
@@ -100,7 +101,7 @@ void RobinEnd::addResidual(const StepContext<1>& ctx, const HostValues& x,
   f(F, 0) += alpha_ * x(F, 0) + beta_ * uEnd - gamma(ctx);  // eq. 1.19
 }
 
-void RobinEnd::addJacobian(const StepContext<1>& ctx, const HostValues& /*x*/,
+void RobinEnd::addJacobian(const ContributionContext<1>& ctx, const HostValues& /*x*/,
                            FECrsMatrix& J) const {
   if (!owner_)
     return;
@@ -114,7 +115,7 @@ void RobinEnd::addJacobian(const StepContext<1>& ctx, const HostValues& /*x*/,
   }
 }
 
-void RobinEnd::commit(const StepContext<1>& ctx, const HostValues& x) {
+void RobinEnd::commit(const ContributionContext<1>& ctx, const HostValues& x) {
   // The owner knows the end force and the end's displacement increment; share them.
   double local[2] = {0.0, 0.0}, global[2];
   if (owner_) {
@@ -130,6 +131,13 @@ void RobinEnd::commit(const StepContext<1>& ctx, const HostValues& x) {
   displacement_ += global[1];
   if (kinematics_ == Kinematics::updatedLagrangian)
     position_ += global[1];
+}
+
+void RobinEnd::restore(const std::vector<double>& s) {
+  if (s.size() != 4)
+    throw std::invalid_argument("a Robin end's state has 4 values, not " +
+                                std::to_string(s.size()));
+  position_ = s[0], displacement_ = s[1], force_ = s[2], work_ = s[3];
 }
 
 }  // namespace impm

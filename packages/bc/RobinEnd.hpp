@@ -31,14 +31,19 @@ class RobinEnd : public Contribution<1> {
 
   void prepare(const NodeOwnership<1>& ownership, std::vector<ExtraDof>& extras,
                std::vector<GlobalId>& touched) override;
-  void couplings(const StepContext<1>& ctx, std::vector<std::pair<GO, GO>>& out) const override;
-  void initialGuess(const StepContext<1>& ctx, Vector& x) const override;
-  void addResidual(const StepContext<1>& ctx, const HostValues& x,
+  void couplings(const ContributionContext<1>& ctx,
+                 std::vector<std::pair<GO, GO>>& out) const override;
+  void initialGuess(const ContributionContext<1>& ctx, Vector& x) const override;
+  void addResidual(const ContributionContext<1>& ctx, const HostValues& x,
                    const HostValuesMutable& f) const override;
-  void addJacobian(const StepContext<1>& ctx, const HostValues& x, FECrsMatrix& J) const override;
-  void commit(const StepContext<1>& ctx, const HostValues& x) override;
+  void addJacobian(const ContributionContext<1>& ctx, const HostValues& x,
+                   FECrsMatrix& J) const override;
+  void commit(const ContributionContext<1>& ctx, const HostValues& x) override;
   // F du_end summed over the steps (trapezoidal in F).
   double work() const override { return work_; }
+  // position, displacement, force and work of the end.
+  std::vector<double> state() const override { return {position_, displacement_, force_, work_}; }
+  void restore(const std::vector<double>& s) override;
 
   const std::string& name() const { return name_; }
   const std::string& body() const { return body_; }
@@ -53,7 +58,7 @@ class RobinEnd : public Contribution<1> {
     double weight[2];
     int count = 0;
   };
-  double gamma(const StepContext<1>& ctx) const;
+  double gamma(const ContributionContext<1>& ctx) const;
 
   std::string name_, body_;
   bool left_;

@@ -13,6 +13,7 @@ template <int Dim>
 std::array<int, Dim> chooseBlocks(const GridGeometry<Dim>& g, int numRanks) {
   std::array<int, Dim> best;
   best.fill(1);
+  static_assert(Dim == 1 || Dim == 2, "Decomposition: the block shapes of this dimension");
   if constexpr (Dim == 1) {
     best[0] = std::min(numRanks, g.cells[0]);
   } else {

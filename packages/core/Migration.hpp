@@ -1,7 +1,8 @@
 #pragma once
 // Particles move to the rank that owns the cell holding their position (the architecture's
-// parallel layout).  Every field travels (ParticleSet::forEachField), so nothing a particle
-// carries is lost; particles that stay keep their order, arrivals are appended.
+// parallel layout).  Every field whose specification says so travels (ParticleSet::
+// forEachField), so nothing a particle carries is lost.  Every rank keeps its particles in
+// the order of their ids (the creation order), and rebuilds its per-material index lists.
 
 #include "core/Decomposition.hpp"
 #include "core/ParticleSet.hpp"

@@ -52,6 +52,12 @@ std::string shortValue(const ParameterEntry& entry) {
         s << (k ? ", " : "") << a[k];
     }
     s << "}";
+  } else if (entry.isType<Array<std::string>>()) {
+    s << "{"
+      << join(std::vector<std::string>(Teuchos::getValue<Array<std::string>>(entry).begin(),
+                                       Teuchos::getValue<Array<std::string>>(entry).end()),
+              ", ")
+      << "}";
   } else if (entry.isType<std::string>() && Teuchos::getValue<std::string>(entry).empty()) {
     s << "\"\"";
   } else {
@@ -208,6 +214,24 @@ class ArrayValidator : public Validator {
   Bounds bounds_;
 };
 
+// Names: Array(string) of any length (empty included), entries trimmed of blanks.
+class StringArrayValidator : public Validator {
+ public:
+  void check(ParameterEntry& entry, const std::string& path) const override {
+    if (!entry.isType<Array<std::string>>())
+      throw InputError(path, "expected type Array(string), got " + xmlTypeName(entry));
+    Array<std::string> values = Teuchos::getValue<Array<std::string>>(entry);
+    for (auto& v : values) {
+      const auto first = v.find_first_not_of(" \t"), last = v.find_last_not_of(" \t");
+      v = first == std::string::npos ? "" : v.substr(first, last - first + 1);
+      if (v.empty())
+        throw InputError(path, "an entry is empty");
+    }
+    entry.setValue(values, entry.isDefault(), entry.docString(), entry.validator());
+  }
+  std::string describe() const override { return "Array(string), any length"; }
+};
+
 class BoolValidator : public Validator {
  public:
   void check(ParameterEntry& entry, const std::string& path) const override {
@@ -274,13 +298,12 @@ ParameterList effectiveValidList(ParameterList& user, const ParameterList& valid
   return effective;
 }
 
-std::string suggestion(const std::string& name, const ParameterList& valid) {
+}  // namespace
+
+std::string didYouMean(const std::string& name, const std::vector<std::string>& candidates) {
   std::string best;
   std::size_t bestDistance = 4;
-  for (auto it = valid.begin(); it != valid.end(); ++it) {
-    const std::string& candidate = valid.name(it);
-    if (isTemplate(candidate) || isVariant(candidate) || candidate == kOpaque)
-      continue;
+  for (const auto& candidate : candidates) {
     const std::size_t d = editDistance(name, candidate);
     if (d < bestDistance && d < std::max<std::size_t>(candidate.size(), 2)) {
       bestDistance = d;
@@ -288,6 +311,18 @@ std::string suggestion(const std::string& name, const ParameterList& valid) {
     }
   }
   return best.empty() ? "" : " (did you mean '" + best + "'?)";
+}
+
+namespace {
+
+std::string suggestion(const std::string& name, const ParameterList& valid) {
+  std::vector<std::string> candidates;
+  for (auto it = valid.begin(); it != valid.end(); ++it) {
+    const std::string& candidate = valid.name(it);
+    if (!isTemplate(candidate) && !isVariant(candidate) && candidate != kOpaque)
+      candidates.push_back(candidate);
+  }
+  return didYouMean(name, candidates);
 }
 
 bool isOpaque(const ParameterList& valid) {
@@ -379,6 +414,12 @@ void declareIntArray(ParameterList& valid, const std::string& name, const std::v
                      bool required) {
   valid.set(name, Array<int>(value.begin(), value.end()), doc,
             Teuchos::rcp(new ArrayValidator<int>(sizes, bounds, required)));
+}
+
+void declareStringArray(ParameterList& valid, const std::string& name,
+                        const std::vector<std::string>& value, const std::string& doc) {
+  valid.set(name, Array<std::string>(value.begin(), value.end()), doc,
+            Teuchos::rcp(new StringArrayValidator()));
 }
 
 void declareDoubleArray(ParameterList& valid, const std::string& name,

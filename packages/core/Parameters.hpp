@@ -85,6 +85,9 @@ void declareDoubleArray(Teuchos::ParameterList& valid, const std::string& name,
                         const std::vector<double>& value, const std::vector<int>& sizes,
                         const std::string& doc, Bounds bounds = Bounds::any(),
                         bool required = false);
+// Names (Array(string)), any number of them.
+void declareStringArray(Teuchos::ParameterList& valid, const std::string& name,
+                        const std::vector<std::string>& value, const std::string& doc);
 void declareOpaque(Teuchos::ParameterList& valid, const std::string& name, const std::string& doc);
 
 // Reads a formula-or-number parameter as text.
@@ -113,6 +116,9 @@ Teuchos::ParameterEntry parseByText(const std::string& text);
 // arrays); throws InputError(path, ...) when it does not fit.
 Teuchos::ParameterEntry parseLike(const Teuchos::ParameterEntry& prototype, const std::string& text,
                                   const std::string& path);
+
+// " (did you mean 'x'?)" for the candidate closest to a misspelt name, or "".
+std::string didYouMean(const std::string& name, const std::vector<std::string>& candidates);
 
 // Every parameter: path, type, default, accepted values and doc, one block each.
 void listParameters(const Teuchos::ParameterList& valid, std::ostream& out,

@@ -1,7 +1,6 @@
 #include "io/CsvFile.hpp"
 
-#include <mpi.h>
-#include <Teuchos_DefaultMpiComm.hpp>
+#include "core/MpiComm.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -35,13 +34,6 @@ std::string header(const std::vector<std::string>& columns) {
   for (std::size_t c = 0; c < columns.size(); ++c)
     out += (c ? "," : "") + columns[c];
   return out + "\n";
-}
-
-MPI_Comm rawComm(const Teuchos::Comm<int>& comm) {
-  const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm);
-  if (!mpi)
-    throw std::logic_error("a collective CSV write needs an MPI communicator");
-  return *mpi->getRawMpiComm();
 }
 
 // Appends one row: value(0), ..., value(n - 1).

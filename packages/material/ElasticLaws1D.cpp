@@ -14,14 +14,33 @@ const char* describe(const std::string& parameter) {
                           : "Cubic coefficient C(x) of sigma = E eps + C eps^3";
 }
 
+Bounds boundsOf(const std::string& parameter) {
+  return parameter == "E" ? Bounds::positive() : Bounds::any();
+}
+
+// The law's parameters at the particles, one table per parameter, for device kernels.
+constexpr int kMaxLawParameters = 4;
+struct ParameterTables {
+  Kokkos::Array<Material<1>::Table, kMaxLawParameters> tables;
+  int count = 0;
+  explicit ParameterTables(const std::vector<Material<1>::Table>& t)
+      : count(static_cast<int>(t.size())) {
+    for (int j = 0; j < kMaxLawParameters; ++j)
+      tables[j] = t.at(j < count ? j : 0);
+  }
+  KOKKOS_INLINE_FUNCTION void at(int p, double k[kMaxLawParameters]) const {
+    for (int j = 0; j < count; ++j)
+      k[j] = tables[j](p, 0);
+  }
+};
+
 }  // namespace
 
 template <class Law>
 Teuchos::ParameterList ElasticLaw1D<Law>::validParameters() {
   Teuchos::ParameterList valid;
   for (const auto& p : Law::parameters())
-    declareFormula(valid, p, "1.0", {"x"}, describe(p),
-                   p == "E" ? Bounds::positive() : Bounds::any(), true);
+    declareFormula(valid, p, "1.0", {"x"}, describe(p), boundsOf(p), true);
   return valid;
 }
 
@@ -33,66 +52,74 @@ ElasticLaw1D<Law>::ElasticLaw1D(const std::string& name, const Teuchos::Paramete
 }
 
 template <class Law>
-void ElasticLaw1D<Law>::initialize(Particles& particles, int index) const {
-  const auto names = Law::parameters();
-  for (std::size_t k = 0; k < names.size(); ++k)
-    fillPropertyFromFormula(particles, index, static_cast<int>(k), parameters_[k],
-                            "Materials/" + name() + "/" + names[k],
-                            names[k] == "E" ? Bounds::positive() : Bounds::any());
+std::vector<Material<1>::Variable> ElasticLaw1D<Law>::variables() const {
+  std::vector<Variable> out;
+  for (const auto& p : Law::parameters()) {
+    FieldSpec spec;
+    spec.name = p, spec.doc = describe(p), spec.checkpoint = false;  // recomputed from X_p
+    out.push_back({spec, {}});
+  }
+  return out;
 }
 
 template <class Law>
-void ElasticLaw1D<Law>::firstPiola(const Particles& particles, const Tensors& F, int index,
-                                   Tensors& P, Tangents& A) const {
-  auto material = particles.material;
-  auto props = particles.props;
-  const int n = static_cast<int>(particles.size());
+void ElasticLaw1D<Law>::initialize(const Evaluation& at) const {
+  const auto names = Law::parameters();
+  for (std::size_t k = 0; k < names.size(); ++k)
+    fillPropertyFromFormula<1>(at, at.variables[k], parameters_[k],
+                               "Materials/" + name() + "/" + names[k], boundsOf(names[k]));
+}
+
+template <class Law>
+void ElasticLaw1D<Law>::firstPiola(const Evaluation& at, Tensors& P, Tangents& A) const {
+  const auto members = at.members;
+  const auto F = at.F;
+  const ParameterTables parameters(at.variables);
+  const int n = static_cast<int>(members.extent(0));
   int firstBad = n;
   Kokkos::parallel_reduce(
-      "impm::ElasticLaw1D", RangePolicy<DefaultExecSpace>(0, n),
-      KOKKOS_LAMBDA(const int p, int& bad) {
-        if (material(p) != index)
-          return;
-        double k[kMaxMaterialProps];
-        for (int j = 0; j < kMaxMaterialProps; ++j)
-          k[j] = props(p, j);
+      "impm::ElasticLaw1D", RangePolicy<ExecutionSpace>(0, n),
+      KOKKOS_LAMBDA(const int i, int& bad) {
+        const int p = members(i);
+        double k[kMaxLawParameters];
+        parameters.at(p, k);
         const LawValue v = Law::evaluate(F(p, 0, 0), k);
         P(p, 0, 0) = v.P;
         A(p, 0, 0, 0, 0) = v.A;
-        if (!v.admissible && p < bad)
-          bad = p;
+        if (!v.admissible && i < bad)
+          bad = i;
       },
       Kokkos::Min<int>(firstBad));
   if (firstBad < n) {
     auto Fh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), F);
-    auto id = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.id);
+    auto id = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), at.particles.id);
+    auto m = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), members);
     std::ostringstream msg;
     msg << "material '" << name() << "' (" << Law::model()
-        << ") is not defined at F = " << Fh(firstBad, 0, 0) << " (particle " << id(firstBad) << ")";
+        << ") is not defined at F = " << Fh(m(firstBad), 0, 0) << " (particle " << id(m(firstBad))
+        << ")";
     throw NumericalError(msg.str());
   }
 }
 
 template <class Law>
-void ElasticLaw1D<Law>::energyDensity(const Particles& particles, const Tensors& F, int index,
-                                      Particles::Scalars& W) const {
-  auto material = particles.material;
-  auto props = particles.props;
+void ElasticLaw1D<Law>::energyDensity(const Evaluation& at, Scalars& W) const {
+  const auto members = at.members;
+  const auto F = at.F;
+  const ParameterTables parameters(at.variables);
   Kokkos::parallel_for(
-      "impm::ElasticLaw1D::energy", RangePolicy<DefaultExecSpace>(0, particles.size()),
-      KOKKOS_LAMBDA(const int p) {
-        if (material(p) != index)
-          return;
-        double k[kMaxMaterialProps];
-        for (int j = 0; j < kMaxMaterialProps; ++j)
-          k[j] = props(p, j);
+      "impm::ElasticLaw1D::energy", RangePolicy<ExecutionSpace>(0, members.extent(0)),
+      KOKKOS_LAMBDA(const int i) {
+        const int p = members(i);
+        double k[kMaxLawParameters];
+        parameters.at(p, k);
         W(p) = Law::evaluate(F(p, 0, 0), k).W;
       });
 }
 
 template <class Law>
-double ElasticLaw1D<Law>::maxModulus(const Particles& particles, int index) const {
-  return maxProperty(particles, index, 0);  // E, the small-strain modulus of every law here
+double ElasticLaw1D<Law>::maxModulus(const Evaluation& at) const {
+  return maxProperty<1>(at, at.variables[0]);  // E, the small-strain modulus of every law here
 }
 
 template class ElasticLaw1D<LinearLaw>;

@@ -1,7 +1,7 @@
 #pragma once
 // 1-D elastic laws sigma = xi(eps, x) (primer 1.3-1.4) with eps = F - 1, as device functors
 // over per-particle parameters (formulas of the reference position x, evaluated once into
-// ParticleSet::props).  ElasticLaw1D<Law> runs any of them through the Material interface:
+// the law's parameter fields).  ElasticLaw1D<Law> runs any of them through the Material interface:
 // the framework sees only P(F), dP/dF and the energy W(F).
 //
 //   linear          P = E (F - 1)                     (Hooke, eq. 1.1; also V2's law)
@@ -69,12 +69,12 @@ class ElasticLaw1D : public Material<1> {
   static Teuchos::ParameterList validParameters();
 
   ElasticLaw1D(const std::string& name, const Teuchos::ParameterList& params);
-  void initialize(Particles& particles, int index) const override;
-  void firstPiola(const Particles& particles, const Tensors& F, int index, Tensors& P,
-                  Tangents& A) const override;
-  void energyDensity(const Particles& particles, const Tensors& F, int index,
-                     Particles::Scalars& W) const override;
-  double maxModulus(const Particles& particles, int index) const override;
+  // The law's parameters at each particle, E(X_p), C(X_p): stored, migrated, not written.
+  std::vector<Variable> variables() const override;
+  void initialize(const Evaluation& at) const override;
+  void firstPiola(const Evaluation& at, Tensors& P, Tangents& A) const override;
+  void energyDensity(const Evaluation& at, Scalars& W) const override;
+  double maxModulus(const Evaluation& at) const override;
   bool isLinear() const override { return Law::linear; }
 
  private:

@@ -50,36 +50,46 @@ double FormulaLaw1D::tangent(double e, double x) const {
   return (stress_(e + delta, x) - stress_(e - delta, x)) / (2 * delta);
 }
 
-void FormulaLaw1D::initialize(Particles& particles, int index) const {
+namespace {
+
+// The host copies a formula law works on: reference positions, members, deformation.
+struct HostPoints {
+  explicit HostPoints(const Material<1>::Evaluation& at)
+      : X(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), at.particles.X)),
+        members(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), at.members)),
+        F(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), at.F)) {}
+  std::size_t size() const { return members.extent(0); }
+  Material<1>::Particles::Vectors::HostMirror X;
+  Material<1>::Members::HostMirror members;
+  Material<1>::Tensors::HostMirror F;
+};
+
+}  // namespace
+
+void FormulaLaw1D::initialize(const Evaluation& at) const {
   // The law must hold at rest: finite stress and a positive modulus at eps = 0.
-  auto X = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.X);
-  auto material = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.material);
-  for (std::size_t p = 0; p < particles.size(); ++p) {
-    if (material(p) != index)
-      continue;
-    const double s = stress(0.0, X(p, 0)), t = tangent(0.0, X(p, 0));
+  const HostPoints host(at);
+  for (std::size_t i = 0; i < host.size(); ++i) {
+    const double x = host.X(host.members(i), 0);
+    const double s = stress(0.0, x), t = tangent(0.0, x);
     if (!std::isfinite(s) || !(t > 0)) {
       std::ostringstream msg;
-      msg << "the law must give a finite stress and a positive tangent at eps = 0; at x = "
-          << X(p, 0) << " it gives sigma = " << s << ", dsigma/deps = " << t;
+      msg << "the law must give a finite stress and a positive tangent at eps = 0; at x = " << x
+          << " it gives sigma = " << s << ", dsigma/deps = " << t;
       throw InputError("Materials/" + name() + "/Stress", msg.str());
     }
   }
 }
 
-void FormulaLaw1D::firstPiola(const Particles& particles, const Tensors& F, int index, Tensors& P,
-                              Tangents& A) const {
-  auto X = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.X);
-  auto material = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.material);
-  auto Fh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), F);
+void FormulaLaw1D::firstPiola(const Evaluation& at, Tensors& P, Tangents& A) const {
+  const HostPoints host(at);
   auto Ph = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), P);
   auto Ah = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), A);
-  for (std::size_t p = 0; p < particles.size(); ++p) {
-    if (material(p) != index)
-      continue;
-    const double e = Fh(p, 0, 0) - 1.0;
-    Ph(p, 0, 0) = stress(e, X(p, 0));
-    Ah(p, 0, 0, 0, 0) = tangent(e, X(p, 0));
+  for (std::size_t i = 0; i < host.size(); ++i) {
+    const int p = host.members(i);
+    const double e = host.F(p, 0, 0) - 1.0;
+    Ph(p, 0, 0) = stress(e, host.X(p, 0));
+    Ah(p, 0, 0, 0, 0) = tangent(e, host.X(p, 0));
     if (!std::isfinite(Ph(p, 0, 0)) || !std::isfinite(Ah(p, 0, 0, 0, 0)))
       throw NumericalError("material '" + name() +
                            "' (formula) is not finite at eps = " + std::to_string(e));
@@ -88,33 +98,27 @@ void FormulaLaw1D::firstPiola(const Particles& particles, const Tensors& F, int 
   Kokkos::deep_copy(A, Ah);
 }
 
-void FormulaLaw1D::energyDensity(const Particles& particles, const Tensors& F, int index,
-                                 Particles::Scalars& W) const {
+void FormulaLaw1D::energyDensity(const Evaluation& at, Scalars& W) const {
   // W(eps) = integral of sigma from 0 to eps, Simpson's rule on 32 intervals.
-  auto X = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.X);
-  auto material = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.material);
-  auto Fh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), F);
+  const HostPoints host(at);
   auto Wh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), W);
   const int n = 32;
-  for (std::size_t p = 0; p < particles.size(); ++p) {
-    if (material(p) != index)
-      continue;
-    const double e = Fh(p, 0, 0) - 1.0, h = e / n;
-    double sum = stress(0.0, X(p, 0)) + stress(e, X(p, 0));
+  for (std::size_t i = 0; i < host.size(); ++i) {
+    const int p = host.members(i);
+    const double x = host.X(p, 0), e = host.F(p, 0, 0) - 1.0, h = e / n;
+    double sum = stress(0.0, x) + stress(e, x);
     for (int k = 1; k < n; ++k)
-      sum += (k % 2 ? 4.0 : 2.0) * stress(k * h, X(p, 0));
+      sum += (k % 2 ? 4.0 : 2.0) * stress(k * h, x);
     Wh(p) = sum * h / 3.0;
   }
   Kokkos::deep_copy(W, Wh);
 }
 
-double FormulaLaw1D::maxModulus(const Particles& particles, int index) const {
-  auto X = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.X);
-  auto material = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.material);
+double FormulaLaw1D::maxModulus(const Evaluation& at) const {
+  const HostPoints host(at);
   double modulus = 0.0;
-  for (std::size_t p = 0; p < particles.size(); ++p)
-    if (material(p) == index)
-      modulus = std::max(modulus, tangent(0.0, X(p, 0)));
+  for (std::size_t i = 0; i < host.size(); ++i)
+    modulus = std::max(modulus, tangent(0.0, host.X(host.members(i), 0)));
   return modulus;
 }
 

@@ -19,12 +19,10 @@ class FormulaLaw1D : public Material<1> {
   static Teuchos::ParameterList validParameters();
 
   FormulaLaw1D(const std::string& name, const Teuchos::ParameterList& params);
-  void initialize(Particles& particles, int index) const override;
-  void firstPiola(const Particles& particles, const Tensors& F, int index, Tensors& P,
-                  Tangents& A) const override;
-  void energyDensity(const Particles& particles, const Tensors& F, int index,
-                     Particles::Scalars& W) const override;
-  double maxModulus(const Particles& particles, int index) const override;
+  void initialize(const Evaluation& at) const override;
+  void firstPiola(const Evaluation& at, Tensors& P, Tangents& A) const override;
+  void energyDensity(const Evaluation& at, Scalars& W) const override;
+  double maxModulus(const Evaluation& at) const override;
 
   // sigma and dsigma/deps at strain e and position x.
   double stress(double e, double x) const { return stress_(e, x); }

@@ -35,22 +35,21 @@ PlaneStrainLaw<Law>::PlaneStrainLaw(const std::string& name, const Teuchos::Para
 }
 
 template <class Law>
-void PlaneStrainLaw<Law>::firstPiola(const Particles& particles, const Tensors& F, int index,
-                                     Tensors& P, Tangents& A) const {
-  auto material = particles.material;
+void PlaneStrainLaw<Law>::firstPiola(const Evaluation& at, Tensors& P, Tangents& A) const {
+  const auto members = at.members;
+  const auto F = at.F;
   const Lame lame = lame_;
-  const int n = static_cast<int>(particles.size());
+  const int n = static_cast<int>(members.extent(0));
   int firstBad = n;
   Kokkos::parallel_reduce(
-      "impm::PlaneStrainLaw", RangePolicy<DefaultExecSpace>(0, n),
-      KOKKOS_LAMBDA(const int p, int& bad) {
-        if (material(p) != index)
-          return;
+      "impm::PlaneStrainLaw", RangePolicy<ExecutionSpace>(0, n),
+      KOKKOS_LAMBDA(const int i, int& bad) {
+        const int p = members(i);
         double f[2][2];
         load(F, p, f);
         const PlaneStrainValue v = Law::evaluate(f, lame);
-        if (!v.admissible && p < bad)
-          bad = p;
+        if (!v.admissible && i < bad)
+          bad = i;
         for (int a = 0; a < 2; ++a)
           for (int b = 0; b < 2; ++b) {
             P(p, a, b) = v.P[a][b];
@@ -62,27 +61,25 @@ void PlaneStrainLaw<Law>::firstPiola(const Particles& particles, const Tensors& 
       Kokkos::Min<int>(firstBad));
   if (firstBad < n) {
     auto Fh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), F);
-    auto id = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.id);
-    const double J =
-        Fh(firstBad, 0, 0) * Fh(firstBad, 1, 1) - Fh(firstBad, 0, 1) * Fh(firstBad, 1, 0);
+    auto id = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), at.particles.id);
+    auto m = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), members);
     std::ostringstream msg;
     msg << "material '" << name() << "' (" << Law::model()
-        << ") is not defined at J = det F = " << J << " (particle " << id(firstBad)
-        << "): the particle is inverted";
+        << ") is not defined at J = det F = " << determinant<2>(Fh, m(firstBad)) << " (particle "
+        << id(m(firstBad)) << "): the particle is inverted";
     throw NumericalError(msg.str());
   }
 }
 
 template <class Law>
-void PlaneStrainLaw<Law>::energyDensity(const Particles& particles, const Tensors& F, int index,
-                                        Particles::Scalars& W) const {
-  auto material = particles.material;
+void PlaneStrainLaw<Law>::energyDensity(const Evaluation& at, Scalars& W) const {
+  const auto members = at.members;
+  const auto F = at.F;
   const Lame lame = lame_;
   Kokkos::parallel_for(
-      "impm::PlaneStrainLaw::energy", RangePolicy<DefaultExecSpace>(0, particles.size()),
-      KOKKOS_LAMBDA(const int p) {
-        if (material(p) != index)
-          return;
+      "impm::PlaneStrainLaw::energy", RangePolicy<ExecutionSpace>(0, members.extent(0)),
+      KOKKOS_LAMBDA(const int i) {
+        const int p = members(i);
         double f[2][2];
         load(F, p, f);
         W(p) = Law::evaluate(f, lame).W;
@@ -90,15 +87,14 @@ void PlaneStrainLaw<Law>::energyDensity(const Particles& particles, const Tensor
 }
 
 template <class Law>
-void PlaneStrainLaw<Law>::outOfPlaneStress(const Particles& particles, const Tensors& F, int index,
-                                           Particles::Scalars& stressZZ) const {
-  auto material = particles.material;
+void PlaneStrainLaw<Law>::outOfPlaneStress(const Evaluation& at, Scalars& stressZZ) const {
+  const auto members = at.members;
+  const auto F = at.F;
   const Lame lame = lame_;
   Kokkos::parallel_for(
-      "impm::PlaneStrainLaw::stressZZ", RangePolicy<DefaultExecSpace>(0, particles.size()),
-      KOKKOS_LAMBDA(const int p) {
-        if (material(p) != index)
-          return;
+      "impm::PlaneStrainLaw::stressZZ", RangePolicy<ExecutionSpace>(0, members.extent(0)),
+      KOKKOS_LAMBDA(const int i) {
+        const int p = members(i);
         double f[2][2];
         load(F, p, f);
         stressZZ(p) = Law::evaluate(f, lame).stressZZ;

@@ -19,6 +19,7 @@
 
 #include <string>
 
+#include "core/Tensor.hpp"
 #include "material/Material.hpp"
 
 namespace impm {
@@ -70,10 +71,11 @@ struct NeoHookeanLaw {
   static constexpr bool linear = false;
   KOKKOS_INLINE_FUNCTION static PlaneStrainValue evaluate(const double F[2][2], Lame k) {
     PlaneStrainValue v{};
-    const double J = F[0][0] * F[1][1] - F[0][1] * F[1][0];
+    const double J = determinant<2>(F);
     if (!(J > 0.0))
       return v;
-    const double Finv[2][2] = {{F[1][1] / J, -F[0][1] / J}, {-F[1][0] / J, F[0][0] / J}};
+    double Finv[2][2];
+    inverse<2>(F, J, Finv);
     const double lnJ = Kokkos::Experimental::log(J);
     double trC = 0.0;
     for (int a = 0; a < 2; ++a)
@@ -100,14 +102,10 @@ class PlaneStrainLaw : public Material<2> {
   static Teuchos::ParameterList validParameters();
 
   PlaneStrainLaw(const std::string& name, const Teuchos::ParameterList& params);
-  void initialize(Particles& /*particles*/, int /*index*/) const override {}
-  void firstPiola(const Particles& particles, const Tensors& F, int index, Tensors& P,
-                  Tangents& A) const override;
-  void energyDensity(const Particles& particles, const Tensors& F, int index,
-                     Particles::Scalars& W) const override;
-  void outOfPlaneStress(const Particles& particles, const Tensors& F, int index,
-                        Particles::Scalars& stressZZ) const override;
-  double maxModulus(const Particles& /*particles*/, int /*index*/) const override {
+  void firstPiola(const Evaluation& at, Tensors& P, Tangents& A) const override;
+  void energyDensity(const Evaluation& at, Scalars& W) const override;
+  void outOfPlaneStress(const Evaluation& at, Scalars& stressZZ) const override;
+  double maxModulus(const Evaluation& /*at*/) const override {
     return lame_.lambda + 2.0 * lame_.mu;  // P-wave modulus: c = sqrt((lambda + 2 mu) / rho)
   }
   bool isLinear() const override { return Law::linear; }

@@ -21,11 +21,11 @@ using HostValuesMutable = Kokkos::View<double**, Kokkos::LayoutLeft, Kokkos::Hos
 
 // What a contribution sees of the current step.
 template <int Dim>
-struct StepContext {
+struct ContributionContext {
   const GridGeometry<Dim>& grid;
   const ParticleSet<Dim>& particles;
   const ParticleGridMap<Dim>& map;
-  const Kokkos::View<LO*>& entryDofs;
+  const Kokkos::View<LO*>& entryDofs;  // overlap-map index of each map entry's node
   const DofMap<Dim>& dofs;
   double time;        // time at the end of the step
   double loadFactor;  // fraction of the loads applied at the end of the step (static ramps)
@@ -42,23 +42,28 @@ class Contribution {
   virtual void prepare(const NodeOwnership<Dim>& /*ownership*/, std::vector<ExtraDof>& /*extras*/,
                        std::vector<GlobalId>& /*touched*/) {}
   // Matrix entries (global row, global column) this rank adds beyond the particle couplings.
-  virtual void couplings(const StepContext<Dim>& /*ctx*/,
+  virtual void couplings(const ContributionContext<Dim>& /*ctx*/,
                          std::vector<std::pair<GO, GO>>& /*out*/) const {}
   // Prescribed unknowns this rank owns, as (global index, value of the increment): their
   // rows of the system become du_i = value (Dirichlet conditions).
-  virtual void constraints(const StepContext<Dim>& /*ctx*/,
+  virtual void constraints(const ContributionContext<Dim>& /*ctx*/,
                            std::vector<std::pair<GO, double>>& /*out*/) const {}
   // Initial guess of the extra unknowns this rank owns (x is the owned vector).
-  virtual void initialGuess(const StepContext<Dim>& /*ctx*/, Vector& /*x*/) const {}
+  virtual void initialGuess(const ContributionContext<Dim>& /*ctx*/, Vector& /*x*/) const {}
   // Adds to the residual / Jacobian; x and f are overlap-local.
-  virtual void addResidual(const StepContext<Dim>& /*ctx*/, const HostValues& /*x*/,
+  virtual void addResidual(const ContributionContext<Dim>& /*ctx*/, const HostValues& /*x*/,
                            const HostValuesMutable& /*f*/) const {}
-  virtual void addJacobian(const StepContext<Dim>& /*ctx*/, const HostValues& /*x*/,
+  virtual void addJacobian(const ContributionContext<Dim>& /*ctx*/, const HostValues& /*x*/,
                            FECrsMatrix& /*J*/) const {}
   // The step converged with solution x (overlap-local).  Collective.
-  virtual void commit(const StepContext<Dim>& /*ctx*/, const HostValues& /*x*/) {}
+  virtual void commit(const ContributionContext<Dim>& /*ctx*/, const HostValues& /*x*/) {}
   // Work done on the bodies so far (for the energy balance); the same on every rank.
   virtual double work() const { return 0.0; }
+  // What the contribution carries from one step to the next (an end force and position, the
+  // time of the last commit), for checkpoints; the same on every rank.  restore() puts back
+  // what state() gave.
+  virtual std::vector<double> state() const { return {}; }
+  virtual void restore(const std::vector<double>& /*state*/) {}
 };
 
 }  // namespace impm

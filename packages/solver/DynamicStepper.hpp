@@ -1,12 +1,12 @@
 #pragma once
 // Transient steps (primer 1.2, 1.5.3): M a + f_int = f_ext + boundary forces, stepped in
-// time on the grid.  Every scheme is written as a step of the grid system with the inertia
-// term M a, where the scheme's acceleration is linear in the step's displacement du:
+// time on the grid.  Every integrator is written as a step of the grid system with the inertia
+// term M a, where the integrator's acceleration is linear in the step's displacement du:
 //   Newmark (beta, gamma):      a^(n+1) = (du - dt v^n - dt^2 (1/2 - beta) a^n) / (beta dt^2)
 //   explicit, central difference: a^n = (du - dt v^n) / dt^2        (u^(n+1) = u^n + dt v^(n+1))
 //   explicit, primer eq. 1.53:    a^n = 2 (du - dt v^n) / dt^2       (u^(n+1) = u^n + dt v^n
 //                                                                       + dt^2 a^n / 2)
-// Explicit schemes take the internal force at the start of the step (eq. 1.51) and lumped
+// Explicit integrators take the internal force at the start of the step (eq. 1.51) and lumped
 // mass; their velocity update is v^(n+1) = v^n + dt a^n (eq. 1.52); Newmark's is
 // v^(n+1) = v^n + dt ((1 - gamma) a^n + gamma a^(n+1)).  The primer's position update, as
 // printed, is unconditionally unstable (|amplification|^2 = 1 + (w dt)^2 / 2); it is kept
@@ -19,59 +19,62 @@
 
 #include <Teuchos_ParameterList.hpp>
 
-#include "solver/StepperContext.hpp"
+#include "solver/Stepper.hpp"
 
 namespace impm {
 
 struct DynamicSettings {
-  enum class Scheme { newmark, centralDifference, primerTaylor };
-  Scheme scheme = Scheme::newmark;
+  enum class Integrator { newmark, centralDifference, primerTaylor };
+  Integrator integrator = Integrator::newmark;
   double timeStep = 0.0, finalTime = 0.0, minTimeStep = 0.0;
   double beta = 0.25, gamma = 0.5;
   double flip = 1.0;  // FLIP fraction of the particle velocity update (0: PIC)
   MassType mass = MassType::lumped;
   bool equilibriumInitialAcceleration = true;
-  bool isExplicit() const { return scheme != Scheme::newmark; }
+  bool isExplicit() const { return integrator != Integrator::newmark; }
 };
 
 template <int Dim>
-class DynamicStepper {
+class DynamicStepper : public Stepper<Dim> {
  public:
-  DynamicStepper(const DynamicSettings& settings, StepperContext<Dim> context);
+  DynamicStepper(const DynamicSettings& settings, StepperSetup<Dim> setup);
 
-  // Steps to the final time; calls onStep after each accepted step.  A step whose Newton
-  // solve fails is retried with half the time step, down to the minimum.  Throws
-  // NumericalError (with the time) when that fails or a particle leaves the grid.
+  // Steps to the final time (from t = 0, or from a restored state); calls onStep after each
+  // accepted step.  A step whose Newton solve fails is retried with half the time step, down
+  // to the minimum.  Throws NumericalError (with the time) when that fails or a particle
+  // leaves the grid.
   void run(const StepCallback<Dim>& onStep);
 
   // The explicit stability limit h / c, c the largest wave speed sqrt(E / rho).  Collective.
   static double stableTimeStep(const GridGeometry<Dim>& grid, const ParticleSet<Dim>& particles,
-                               const std::vector<std::shared_ptr<Material<Dim>>>& materials,
-                               const Comm& comm);
+                               const Materials<Dim>& materials, const Comm& comm);
 
  private:
-  struct Scheme {
-    double c0, rv, ra;  // a(du) = c0 du - (rv v^n + ra a^n)
+  // The integrator's acceleration a(du) = c0 du - (rv v^n + ra a^n) for a step of size dt.
+  struct Acceleration {
+    double c0, rv, ra;
   };
-  Scheme scheme(double dt) const;
+  Acceleration acceleration(double dt) const;
   Teuchos::RCP<GridSystem<Dim>> systemAt(double time);
   void gridVelocityAndAcceleration(GridSystem<Dim>& system, const Vector& mass,
                                    Teuchos::RCP<Vector>& v, Teuchos::RCP<Vector>& a);
   Teuchos::RCP<Vector> fromParticles(GridSystem<Dim>& system, const Vector& mass,
                                      const typename ParticleSet<Dim>::Vectors& q);
   void startFixedGrid(GridSystem<Dim>& system);
+  // Fixed grid: the nodal u, v, a to and from the stepper's state (checkpoints).
+  void saveNodalState();
+  void restoreNodalState(GridSystem<Dim>& system);
   Teuchos::RCP<Vector> equilibriumAcceleration(GridSystem<Dim>& system, const Vector& v, double dt);
-  bool solveStep(GridSystem<Dim>& system, const Scheme& s, const Vector& v, const Vector& a,
+  bool solveStep(GridSystem<Dim>& system, const Acceleration& s, const Vector& v, const Vector& a,
                  double dt, Teuchos::RCP<Vector>& du, NewtonReport& report);
+  // 3 of a dynamic step: particles, then their velocities (FLIP/PIC) from v, vNew, aNew.
+  void gridToParticles(GridSystem<Dim>& system, const Vector& du, const Vector& v,
+                       const Vector& vNew, const Vector& aNew);
 
   DynamicSettings settings_;
-  StepperContext<Dim> ctx_;
   bool fixedGrid_;
   Teuchos::RCP<GridSystem<Dim>> fixedSystem_;
   Teuchos::RCP<Vector> u_, v_, a_;  // nodal state of a fixed grid
-  bool started_ = false;
-  double bodyWork_ = 0.0;
-  std::ostream* log_;
 };
 
 }  // namespace impm

@@ -57,8 +57,8 @@ HostValues constHost(const View& v) {
 template <int Dim>
 GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
                             Kinematics kinematics, const ParticleSet<Dim>& particles,
-                            const Materials& materials, const Contributions& contributions,
-                            double time, double loadFactor)
+                            const Materials<Dim>& materials, const Contributions& contributions,
+                            double time, double loadFactor, StepWorkspace<Dim>* workspace)
     : grid_(ownership.grid()),
       kinematics_(kinematics),
       particles_(particles),
@@ -66,10 +66,13 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
       contributions_(contributions),
       time_(time),
       loadFactor_(loadFactor),
-      map_(buildMapCollectively(ownership, method, kinematics, particles)),
-      dofs_(numberUnknowns(ownership, map_, contributions, firstExtra_)) {
+      particleGridMap_(buildMapCollectively(ownership, method, kinematics, particles)),
+      dofs_(numberUnknowns(ownership, particleGridMap_, contributions, firstExtra_)),
+      work_((workspace ? *workspace : ownWorkspace_).arrays(particles.size())),
+      trial_(particles, materials) {
   // A failure on one rank must stop every rank (the next steps are collective).
-  collectively(*ownership.comm(), [&] { entryDofs_ = impm::entryDofs(map_, *dofs_.overlapMap()); });
+  collectively(*ownership.comm(),
+               [&] { entryDofs_ = impm::entryDofs(particleGridMap_, *dofs_.overlapMap()); });
   std::vector<std::pair<GO, GO>> couplings;
   for (std::size_t c = 0; c < contributions_.size(); ++c)
     contributions_[c]->couplings(context(static_cast<int>(c)), couplings);
@@ -78,10 +81,10 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
   checkEveryActiveNodeIsIntegrated();
   {
     IMPM_TIMER("graph");
-    graph_ = buildGraph(map_, entryDofs_, dofs_, couplings);
+    graph_ = buildGraph(particleGridMap_, entryDofs_, dofs_, couplings);
   }
   collectively(*ownership.comm(),
-               [&] { entryCols_ = impm::entryColumns(map_, *graph_->getColMap()); });
+               [&] { entryCols_ = impm::entryColumns(particleGridMap_, *graph_->getColMap()); });
   importer_ = Teuchos::rcp(new Import(dofs_.ownedMap(), dofs_.overlapMap()));
   nodalMask_ = Teuchos::rcp(new Vector(dofs_.ownedMap()));
   {
@@ -90,18 +93,12 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
     for (std::size_t k = 0; k < owned.getNodeNumElements(); ++k)
       mask(k, 0) = dofs_.isExtraDof(owned.getGlobalElement(static_cast<LO>(k))) ? 0.0 : 1.0;
   }
-  const std::size_t n = particles.size();
-  F_ = typename ParticleSet<Dim>::Tensors("trial F", n);
-  P_ = typename ParticleSet<Dim>::Tensors("P", n);
-  Pn_ = typename ParticleSet<Dim>::Tensors("P relative to step start", n);
-  A_ = Tangents<Dim>("A", n);
-  An_ = Tangents<Dim>("A relative to step start", n);
   // Prescribed rows get the size of a stiffness diagonal (modulus h^(Dim-2)), so that they
   // neither dominate nor vanish in the preconditioner.
-  double modulus = 0.0, local = 0.0;
+  double modulus = 0.0;
   for (std::size_t m = 0; m < materials_.size(); ++m)
-    local = std::max(local, materials_[m]->maxModulus(particles_, static_cast<int>(m)));
-  Teuchos::reduceAll(*ownership.comm(), Teuchos::REDUCE_MAX, local, Teuchos::outArg(modulus));
+    modulus = std::max(modulus,
+                       maxModulus(particles_, materials_, static_cast<int>(m), *ownership.comm()));
   double h = grid_.spacing[0];
   for (int d = 1; d < Dim; ++d)
     h = std::min(h, grid_.spacing[d]);
@@ -141,7 +138,7 @@ void GridSystem<Dim>::applyConstraints(const Vector& x, Vector* residual,
     // Row lid becomes scale * e_lid: the graph stays, the values of the row change.
     const auto& cols = *jacobian->getColMap();
     const auto& owned = *dofs_.ownedMap();
-    Kokkos::View<LO* [2]> rowCol("constrained rows", rows.size());
+    Kokkos::View<LO* [2]> rowCol("constrained rows", rows.size());  // row, column of e_row
     auto host = Kokkos::create_mirror_view(rowCol);
     for (std::size_t i = 0; i < rows.size(); ++i) {
       host(i, 0) = rows[i].first;
@@ -196,9 +193,9 @@ void GridSystem<Dim>::checkEveryActiveNodeIsIntegrated() const {
 }
 
 template <int Dim>
-StepContext<Dim> GridSystem<Dim>::context(int contribution) const {
-  return StepContext<Dim>{grid_, particles_, map_,        entryDofs_,
-                          dofs_, time_,      loadFactor_, firstExtra_[contribution]};
+ContributionContext<Dim> GridSystem<Dim>::context(int contribution) const {
+  return ContributionContext<Dim>{grid_, particles_, particleGridMap_, entryDofs_,
+                                  dofs_, time_,      loadFactor_,      firstExtra_[contribution]};
 }
 
 template <int Dim>
@@ -229,22 +226,25 @@ void GridSystem<Dim>::updateStress(const Vector& x) {
   auto xo = toOverlap(x);
   {
     auto du = xo->getLocalViewDevice(Tpetra::Access::ReadOnly);
-    trialDeformationGradient<Dim>(kinematics_, map_, entryDofs_, du, particles_.F, F_);
+    trialDeformationGradient<Dim>(kinematics_, particleGridMap_, entryDofs_, du, particles_.F,
+                                  work_.F);
   }
   collectively(*dofs_.ownedMap()->getComm(), [&] {
-    for (std::size_t m = 0; m < materials_.size(); ++m)
-      materials_[m]->firstPiola(particles_, F_, static_cast<int>(m), P_, A_);
+    for (std::size_t m = 0; m < materials_.size(); ++m) {
+      const int k = static_cast<int>(m);
+      materials_[m]->firstPiola(evaluationOf(particles_, materials_, k, work_.F, trial_.of(k)),
+                                work_.P, work_.A);
+    }
   });
-  stressRelativeToStepStart<Dim>(kinematics_, particles_.F, P_, A_, Pn_, An_);
+  stressRelativeToStepStart<Dim>(kinematics_, particles_.F, work_.P, work_.A, work_.Pn, work_.An);
 }
 
 template <int Dim>
-void GridSystem<Dim>::trialState(const Vector& x, typename ParticleSet<Dim>::Tensors& F,
-                                 typename ParticleSet<Dim>::Tensors& P) {
+std::pair<typename ParticleSet<Dim>::Tensors, typename ParticleSet<Dim>::Tensors>
+GridSystem<Dim>::trialState(const Vector& x) {
   updateStress(x);
   frozenReady_ = false;
-  Kokkos::deep_copy(F, F_);
-  Kokkos::deep_copy(P, P_);
+  return {work_.F, work_.P};
 }
 
 template <int Dim>
@@ -252,7 +252,7 @@ void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jac
   if (!frozen_) {
     updateStress(x);
   } else if (!frozenReady_) {
-    updateStress(Vector(map()));  // the stress at the start of the step, du = 0
+    updateStress(Vector(unknownMap()));  // the stress at the start of the step, du = 0
     frozenReady_ = true;
   }
   auto xo = toOverlap(x);
@@ -268,10 +268,10 @@ void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jac
     f.beginAssembly();
     {
       auto local = f.getLocalViewDevice(Tpetra::Access::ReadWrite);
-      addInternalForce<Dim>(map_, entryDofs_, particles_, Pn_, local);
-      addExternalForce<Dim>(map_, entryDofs_, particles_.force, loadFactor_, local);
+      addInternalForce<Dim>(particleGridMap_, entryDofs_, particles_, work_.Pn, local);
+      addExternalForce<Dim>(particleGridMap_, entryDofs_, particles_.force, loadFactor_, local);
       if (acceleration)
-        addInertiaForce<Dim>(inertia_.mass, map_, entryDofs_, particles_.mass,
+        addInertiaForce<Dim>(inertia_.mass, particleGridMap_, entryDofs_, particles_.mass,
                              acceleration->getLocalViewDevice(Tpetra::Access::ReadOnly), local);
     }
     {
@@ -290,10 +290,11 @@ void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jac
     J.beginAssembly();
     J.setAllToScalar(0.0);
     if (!frozen_)
-      addTangent<Dim>(map_, entryDofs_, entryCols_, particles_, An_, J.getLocalMatrixDevice());
+      addTangent<Dim>(particleGridMap_, entryDofs_, entryCols_, particles_, work_.An,
+                      J.getLocalMatrixDevice());
     if (acceleration)
-      addMassMatrix<Dim>(inertia_.mass, inertia_.c0, map_, entryDofs_, entryCols_, particles_.mass,
-                         J.getLocalMatrixDevice());
+      addMassMatrix<Dim>(inertia_.mass, inertia_.c0, particleGridMap_, entryDofs_, entryCols_,
+                         particles_.mass, J.getLocalMatrixDevice());
     for (std::size_t c = 0; c < contributions_.size(); ++c)
       contributions_[c]->addJacobian(context(static_cast<int>(c)), constHost(xHost), J);
     J.endAssembly();
@@ -322,7 +323,7 @@ Teuchos::RCP<Vector> GridSystem<Dim>::particleToGrid(
     const typename ParticleSet<Dim>::Vectors& q) const {
   FEMultiVector f(dofs_.ownedMap(), importer_, 1);
   f.beginAssembly();
-  impm::particleToGrid<Dim>(map_, entryDofs_, particles_.mass, q,
+  impm::particleToGrid<Dim>(particleGridMap_, entryDofs_, particles_.mass, q,
                             f.getLocalViewDevice(Tpetra::Access::ReadWrite));
   f.endAssembly();
   auto result = Teuchos::rcp(new Vector(dofs_.ownedMap()));
@@ -334,7 +335,7 @@ template <int Dim>
 Teuchos::RCP<Vector> GridSystem<Dim>::lumpedMass() const {
   FEMultiVector m(dofs_.ownedMap(), importer_, 1);
   m.beginAssembly();
-  addLumpedMass<Dim>(map_, entryDofs_, particles_.mass,
+  addLumpedMass<Dim>(particleGridMap_, entryDofs_, particles_.mass,
                      m.getLocalViewDevice(Tpetra::Access::ReadWrite));
   m.endAssembly();
   auto result = Teuchos::rcp(new Vector(dofs_.ownedMap()));
@@ -347,7 +348,7 @@ Teuchos::RCP<CrsMatrix> GridSystem<Dim>::massMatrix(MassType type) const {
   auto M = Teuchos::rcp(new FECrsMatrix(graph_));
   M->beginAssembly();
   M->setAllToScalar(0.0);
-  addMassMatrix<Dim>(type, 1.0, map_, entryDofs_, entryCols_, particles_.mass,
+  addMassMatrix<Dim>(type, 1.0, particleGridMap_, entryDofs_, entryCols_, particles_.mass,
                      M->getLocalMatrixDevice());
   const auto& owned = *dofs_.ownedMap();
   const double one = 1.0;
@@ -366,6 +367,7 @@ void GridSystem<Dim>::commit(const Vector& x) {
   auto xHost = xo->getLocalViewHost(Tpetra::Access::ReadOnly);
   for (std::size_t c = 0; c < contributions_.size(); ++c)
     contributions_[c]->commit(context(static_cast<int>(c)), constHost(xHost));
+  commitMaterials();
 }
 
 template class GridSystem<1>;

@@ -6,7 +6,8 @@
 // where du are the grid displacement increments of the step and, in dynamic steps,
 // a(du) = c0 du - r is the time integrator's acceleration (Newmark, explicit).  Built at the start
 // of a step from the particle-grid map; the integration points' state at the start of the step is
-// read, never written, until the stepper accepts the solution.
+// read, never written, until the stepper accepts the solution: the materials' trial state lives
+// here until commit().
 
 #include <memory>
 #include <vector>
@@ -14,28 +15,30 @@
 #include "assembly/Kinematics.hpp"
 #include "assembly/Mass.hpp"
 #include "basis/Method.hpp"
-#include "material/Material.hpp"
+#include "material/MaterialState.hpp"
 #include "solver/Contribution.hpp"
 #include "solver/ResidualModel.hpp"
+#include "solver/StepWorkspace.hpp"
 
 namespace impm {
 
 template <int Dim>
 class GridSystem : public ResidualModel {
  public:
-  using Materials = std::vector<std::shared_ptr<Material<Dim>>>;
   using Contributions = std::vector<std::shared_ptr<Contribution<Dim>>>;
 
-  // Builds the map, the unknowns and the graph.  Collective.
+  // Builds the map, the unknowns and the graph.  Collective.  `workspace`: the per-particle
+  // arrays kept across steps (null: the system's own).
   GridSystem(const NodeOwnership<Dim>& ownership, Method method, Kinematics kinematics,
-             const ParticleSet<Dim>& particles, const Materials& materials,
-             const Contributions& contributions, double time, double loadFactor);
+             const ParticleSet<Dim>& particles, const Materials<Dim>& materials,
+             const Contributions& contributions, double time, double loadFactor,
+             StepWorkspace<Dim>* workspace = nullptr);
 
   // The inertia term M a of a dynamic step, a = c0 du - r on the nodal unknowns.
   struct Inertia {
     MassType mass = MassType::lumped;
     double c0 = 0.0;
-    Teuchos::RCP<const Vector> r;  // on map()
+    Teuchos::RCP<const Vector> r;  // on unknownMap()
   };
   void setInertia(const Inertia& inertia);
   // Explicit steps: the internal force is that of the start of the step whatever du is,
@@ -45,16 +48,16 @@ class GridSystem : public ResidualModel {
   // positions serves every step of a total-Lagrangian run).
   void setTime(double time, double loadFactor) { time_ = time, loadFactor_ = loadFactor; }
 
-  // Particle to grid on map(): sum_p m_p phi_ip q_p (momentum for q = v).
+  // Particle to grid on unknownMap(): sum_p m_p phi_ip q_p (momentum for q = v).
   Teuchos::RCP<Vector> particleToGrid(const typename ParticleSet<Dim>::Vectors& q) const;
-  // The lumped mass m_i = sum_p m_p phi_ip on map() (0 on extra unknowns).
+  // The lumped mass m_i = sum_p m_p phi_ip on unknownMap() (0 on extra unknowns).
   Teuchos::RCP<Vector> lumpedMass() const;
   // The mass matrix, with 1 on the diagonal of the extra unknowns so that it can be solved.
   Teuchos::RCP<CrsMatrix> massMatrix(MassType type) const;
   // 1 on nodal unknowns, 0 on extra unknowns.
   const Vector& nodalMask() const { return *nodalMask_; }
 
-  Teuchos::RCP<const Map> map() const override { return dofs_.ownedMap(); }
+  Teuchos::RCP<const Map> unknownMap() const override { return dofs_.ownedMap(); }
   // Explicit steps, and linear materials whose step is linear in du (1-D, or total
   // Lagrangian: no push-forward by J).  Boundary conditions and inertia are linear.
   bool isLinear() const override;
@@ -65,16 +68,20 @@ class GridSystem : public ResidualModel {
   Teuchos::RCP<Vector> initialGuess() const;
   // Overlap values of an owned vector.
   Teuchos::RCP<Vector> toOverlap(const Vector& owned) const;
-  // Tells the contributions that the step converged at x.  Collective.
+  // The step converged at x: the contributions and the materials commit their state (after
+  // trialState(x)).  Collective.
   void commit(const Vector& x);
-  // Deformation gradient, first Piola stress at x (trial state of every particle).
-  void trialState(const Vector& x, typename ParticleSet<Dim>::Tensors& F,
-                  typename ParticleSet<Dim>::Tensors& P);
+  // The materials alone commit their trial state.
+  void commitMaterials() { commitMaterialState(particles_, materials_, trial_); }
+  // Evaluates the materials at x (their trial state); returns the trial F and P, views
+  // that stay valid until the next evaluation.
+  std::pair<typename ParticleSet<Dim>::Tensors, typename ParticleSet<Dim>::Tensors> trialState(
+      const Vector& x);
 
-  const ParticleGridMap<Dim>& particleGridMap() const { return map_; }
-  const Kokkos::View<LO*>& entryDofs() const { return entryDofs_; }
+  const ParticleGridMap<Dim>& particleGridMap() const { return particleGridMap_; }
+  const EntryDofs<>& entryDofs() const { return entryDofs_; }
   const DofMap<Dim>& dofs() const { return dofs_; }
-  StepContext<Dim> context(int contribution) const;
+  ContributionContext<Dim> context(int contribution) const;
 
  private:
   void updateStress(const Vector& x);
@@ -87,14 +94,14 @@ class GridSystem : public ResidualModel {
   const GridGeometry<Dim> grid_;
   Kinematics kinematics_;
   const ParticleSet<Dim>& particles_;
-  const Materials& materials_;
+  const Materials<Dim>& materials_;
   const Contributions& contributions_;
   double time_, loadFactor_;
-  ParticleGridMap<Dim> map_;
+  ParticleGridMap<Dim> particleGridMap_;
   std::vector<int> firstExtra_;
   DofMap<Dim> dofs_;
-  Kokkos::View<LO*> entryDofs_;   // overlap-map index of each map entry's node
-  Kokkos::View<LO**> entryCols_;  // each component's index in the Jacobian's column map
+  EntryDofs<> entryDofs_;     // overlap-map index of each map entry's node
+  EntryColumns<> entryCols_;  // each component's index in the Jacobian's column map
   Teuchos::RCP<FECrsGraph> graph_;
   Teuchos::RCP<const Import> importer_;
   Teuchos::RCP<Vector> nodalMask_;
@@ -102,9 +109,9 @@ class GridSystem : public ResidualModel {
   Teuchos::RCP<Vector> inertiaOverlap_;  // r on the overlap map
   bool frozen_ = false, frozenReady_ = false;
   double constraintScale_ = 1.0;
-  // Work arrays: trial F, P and A, and P, A relative to the start of the step.
-  typename ParticleSet<Dim>::Tensors F_, P_, Pn_;
-  Tangents<Dim> A_, An_;
+  StepWorkspace<Dim> ownWorkspace_;
+  typename StepWorkspace<Dim>::Arrays work_;  // trial F, P, A; P, A relative to the step start
+  TrialState<Dim> trial_;                     // the materials' trial state
 };
 
 }  // namespace impm

@@ -11,7 +11,7 @@ using Extract = Thyra::TpetraOperatorVectorExtraction<double, LO, GO, Node>;
 MpmModelEvaluator::MpmModelEvaluator(Teuchos::RCP<ResidualModel> model,
                                      Teuchos::RCP<const LOWSFactory> lows)
     : model_(std::move(model)), lows_(std::move(lows)) {
-  space_ = Thyra::createVectorSpace<double, LO, GO, Node>(model_->map());
+  space_ = Thyra::createVectorSpace<double, LO, GO, Node>(model_->unknownMap());
   MEB::InArgsSetup<double> in;
   in.setModelEvalDescription("impm grid system");
   in.setSupports(MEB::IN_ARG_x);

@@ -9,8 +9,7 @@ template <int Dim>
 void advanceParticles(GridSystem<Dim>& system, const Vector& du, Kinematics kinematics,
                       ParticleSet<Dim>& particles) {
   IMPM_TIMER("particle update");
-  typename ParticleSet<Dim>::Tensors F("F", particles.size()), P("P", particles.size());
-  system.trialState(du, F, P);
+  const auto [F, P] = system.trialState(du);
   auto duOverlap = system.toOverlap(du);
   updateParticles<Dim>(kinematics, system.particleGridMap(), system.entryDofs(),
                        duOverlap->getLocalViewDevice(Tpetra::Access::ReadOnly), F, P, particles);

@@ -1,6 +1,7 @@
 #pragma once
-// After a converged step: the particles take the step's deformation (trial F and its
-// stress) and displacement from the grid (eq. 1.23), as every stepper does.
+// Grid to particles after a converged step: the particles take the step's deformation (trial
+// F and its stress) and displacement from the grid (eq. 1.23), as every stepper does.  The
+// materials are left at their trial state at du, which the step's commit makes theirs.
 
 #include "solver/GridSystem.hpp"
 

@@ -10,7 +10,7 @@ class ResidualModel {
  public:
   virtual ~ResidualModel() = default;
   // Distribution of the unknowns (and of the residual).
-  virtual Teuchos::RCP<const Map> map() const = 0;
+  virtual Teuchos::RCP<const Map> unknownMap() const = 0;
   // A matrix with the Jacobian's graph, to be filled by evaluate().
   virtual Teuchos::RCP<CrsMatrix> createJacobian() const = 0;
   // Fills the residual and/or the Jacobian at x; either pointer may be null.  Collective.

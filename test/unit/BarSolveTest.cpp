@@ -65,8 +65,8 @@ TEST(BarSolve, PatchTestIsExact) {
     Teuchos::ParameterList mat;
     mat.set("Model", std::string("linear")), mat.set("E", std::string("1 - x/2"));
     validateParameters(mat, materialValidParameters());
-    std::vector<std::shared_ptr<Material<1>>> materials = {createMaterial<1>("steel", mat)};
-    materials[0]->initialize(ps, 0);
+    Materials<1> materials = {createMaterial<1>("steel", mat)};
+    declareMaterialVariables(ps, materials), initializeMaterials(ps, materials, true);
     std::vector<std::shared_ptr<Contribution<1>>> bcs = {robin("left", 0, 1, 0, 0.0),
                                                          robin("right", 1, 0, 1, 1.0)};
     auto system = Teuchos::rcp(
@@ -126,8 +126,8 @@ TEST(GridSystem, JacobianIsTheDerivativeOfTheResidual) {
   Teuchos::ParameterList mat;
   mat.set("Model", std::string("linear")), mat.set("E", std::string("1 + x"));
   validateParameters(mat, materialValidParameters());
-  std::vector<std::shared_ptr<Material<1>>> materials = {createMaterial<1>("m", mat)};
-  materials[0]->initialize(ps, 0);
+  Materials<1> materials = {createMaterial<1>("m", mat)};
+  declareMaterialVariables(ps, materials), initializeMaterials(ps, materials, true);
   auto robin = [](const std::string& end, double a, double b, double at) {
     Teuchos::ParameterList p;
     p.set("Body", std::string("bar")), p.set("End", end), p.set("alpha", a), p.set("beta", b);
@@ -138,7 +138,8 @@ TEST(GridSystem, JacobianIsTheDerivativeOfTheResidual) {
                                                        robin("right", 1, -2, 1.0)};
   for (Method method : {Method::mpm, Method::gimp, Method::cpdi}) {
     GridSystem<1> system(own, method, Kinematics::updatedLagrangian, ps, materials, bcs, 1.0, 1.0);
-    Vector x(system.map()), v(system.map()), Jv(system.map()), rp(system.map()), rm(system.map());
+    Vector x(system.unknownMap()), v(system.unknownMap()), Jv(system.unknownMap()),
+        rp(system.unknownMap()), rm(system.unknownMap());
     x.randomize(-0.01, 0.01);
     v.randomize(-1.0, 1.0);
     auto J = system.createJacobian();

@@ -28,7 +28,7 @@ class CubicModel : public ResidualModel {
     }
     graph_->fillComplete();
   }
-  Teuchos::RCP<const Map> map() const override { return map_; }
+  Teuchos::RCP<const Map> unknownMap() const override { return map_; }
   Teuchos::RCP<CrsMatrix> createJacobian() const override {
     return Teuchos::rcp(new CrsMatrix(graph_));
   }
@@ -68,7 +68,7 @@ TEST(NewtonSolver, ConvergesQuadratically) {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   auto model = Teuchos::rcp(new CubicModel(comm));
   NewtonSolver newton(solverList(), comm);
-  Vector x(model->map());
+  Vector x(model->unknownMap());
   x.putScalar(3.0);
   const auto report = newton.solve(model, x);
   ASSERT_TRUE(report.converged);
@@ -90,7 +90,7 @@ TEST(NewtonSolver, ReportsFailureWithinTheIterationLimit) {
   auto params = solverList();
   params.set("Maximum Iterations", 2);
   NewtonSolver newton(params, comm);
-  Vector x(model->map());
+  Vector x(model->unknownMap());
   x.putScalar(30.0);
   const auto report = newton.solve(model, x);
   EXPECT_FALSE(report.converged);

@@ -10,11 +10,11 @@
 namespace impm {
 
 template <int Dim, class Space = DefaultExecSpace>
-struct PointScheme {
+struct PointWeights {
   GridGeometry<Dim> grid;
   typename ParticleSet<Dim, Space>::Vectors x;
 
-  PointScheme(const GridGeometry<Dim>& g, const ParticleSet<Dim, Space>& ps) : grid(g), x(ps.x) {}
+  PointWeights(const GridGeometry<Dim>& g, const ParticleSet<Dim, Space>& ps) : grid(g), x(ps.x) {}
 
   // The cell holding the point; false when the point is outside the grid.
   KOKKOS_INLINE_FUNCTION bool nodeBox(int p, int lo[Dim], int hi[Dim], double tol) const {

@@ -10,17 +10,18 @@
 #include "basis/Tent.hpp"
 #include "core/Grid.hpp"
 #include "core/ParticleSet.hpp"
+#include "core/Tensor.hpp"
 
 namespace impm {
 
 template <int Dim, class Space = DefaultExecSpace>
-struct CpdiScheme {
+struct CpdiWeights {
   static constexpr int kCorners = 1 << Dim;
   GridGeometry<Dim> grid;
   typename ParticleSet<Dim, Space>::Vectors x;
   typename ParticleSet<Dim, Space>::Tensors domain;
 
-  CpdiScheme(const GridGeometry<Dim>& g, const ParticleSet<Dim, Space>& ps)
+  CpdiWeights(const GridGeometry<Dim>& g, const ParticleSet<Dim, Space>& ps)
       : grid(g), x(ps.x), domain(ps.domain) {}
 
   KOKKOS_INLINE_FUNCTION static double sign(int c, int k) { return (c >> k) & 1 ? 1.0 : -1.0; }
@@ -73,16 +74,16 @@ struct CpdiScheme {
     }
     const double scale = 1.0 / kCorners;
     phi *= scale;
-    // grad = R^-T gxi: solve R^T grad = gxi.
-    if constexpr (Dim == 1) {
-      grad[0] = scale * gxi[0] / domain(p, 0, 0);
-    } else {
-      const double r00 = domain(p, 0, 0), r01 = domain(p, 0, 1);
-      const double r10 = domain(p, 1, 0), r11 = domain(p, 1, 1);
-      const double det = r00 * r11 - r01 * r10;
-      // R^T = [[r00, r10], [r01, r11]]; its inverse is [[r11, -r10], [-r01, r00]] / det.
-      grad[0] = scale * (r11 * gxi[0] - r10 * gxi[1]) / det;
-      grad[1] = scale * (-r01 * gxi[0] + r00 * gxi[1]) / det;
+    // grad = R^-T gxi.
+    double R[Dim][Dim], Rinv[Dim][Dim];
+    for (int a = 0; a < Dim; ++a)
+      for (int k = 0; k < Dim; ++k)
+        R[a][k] = domain(p, a, k);
+    inverse<Dim>(R, determinant<Dim>(R), Rinv);
+    for (int d = 0; d < Dim; ++d) {
+      grad[d] = 0.0;
+      for (int k = 0; k < Dim; ++k)
+        grad[d] += scale * Rinv[k][d] * gxi[k];
     }
   }
 };

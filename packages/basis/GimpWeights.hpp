@@ -12,12 +12,12 @@
 namespace impm {
 
 template <int Dim, class Space = DefaultExecSpace>
-struct GimpScheme {
+struct GimpWeights {
   GridGeometry<Dim> grid;
   typename ParticleSet<Dim, Space>::Vectors x;
   typename ParticleSet<Dim, Space>::Tensors domain;
 
-  GimpScheme(const GridGeometry<Dim>& g, const ParticleSet<Dim, Space>& ps)
+  GimpWeights(const GridGeometry<Dim>& g, const ParticleSet<Dim, Space>& ps)
       : grid(g), x(ps.x), domain(ps.domain) {}
 
   // Domain ends along d in grid units, clipped to the grid (see clipToGrid).

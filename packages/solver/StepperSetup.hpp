@@ -1,7 +1,7 @@
 #pragma once
 // Everything a time stepper works on (the grid and its ownership, the discretisation, the
-// particles with their materials, the extra terms, the Newton solver, the loads), and what
-// it reports after every accepted step.
+// particles with their materials, the extra terms, the Newton solver, the loads), the state
+// it carries between steps, and what it reports after every accepted step.
 
 #include <functional>
 #include <memory>
@@ -15,12 +15,12 @@
 namespace impm {
 
 template <int Dim>
-struct StepperContext {
+struct StepperSetup {
   const NodeOwnership<Dim>& ownership;
   Method method;
   Kinematics kinematics;
   ParticleSet<Dim>& particles;
-  const std::vector<std::shared_ptr<Material<Dim>>>& materials;
+  const Materials<Dim>& materials;
   const std::vector<std::shared_ptr<Contribution<Dim>>>& contributions;
   const NewtonSolver& newton;
   // Sets particles.force (the full external force at `time`).
@@ -28,6 +28,22 @@ struct StepperContext {
   // Total-Lagrangian dynamics keeps nodal values (FEM): their initial displacement and
   // velocity at node position x (the deck's fields interpolated at the nodes).
   std::function<void(const double* x, double* u, double* v)> initialNodalState;
+};
+
+// What a stepper carries from one step to the next: all a restart needs to continue as if
+// the run had not stopped (checkpoints save it).
+struct StepperState {
+  int step = 0;             // accepted steps
+  double time = 0.0;        // dynamic: the time reached; static: Final Time x load factor
+  double loadFactor = 0.0;  // static: the load factor reached
+  double size = 0.0;        // the next step's size (load increment or time step), after
+                            // cutbacks and regrowth; 0: the nominal size
+  int attempts = 0;         // failed attempts of the step under way
+  double bodyWork = 0.0;    // work of the body forces so far
+  bool started = false;     // dynamic: the initial state (acceleration) is set up
+  // Dynamic runs on a fixed grid: the nodal u, v, a, by global unknown (owned ones).
+  std::vector<GO> nodalDofs;
+  std::vector<double> nodalU, nodalV, nodalA;
 };
 
 struct StepRecord {
@@ -41,7 +57,7 @@ struct StepRecord {
   double kineticEnergy = 0.0, strainEnergy = 0.0, externalWork = 0.0;
 };
 
-// The grid solution of an accepted step, for output (vectors on system.map()).
+// The grid solution of an accepted step, for output (vectors on system.unknownMap()).
 template <int Dim>
 struct StepGrid {
   const GridSystem<Dim>& system;

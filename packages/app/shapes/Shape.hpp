@@ -1,0 +1,58 @@
+#pragma once
+// The region a body occupies in the reference configuration, and the integration points that
+// fill it.  One file per shape (Interval, Rectangle, Disk, Polygon); ShapeFactory turns
+// Bodies/<name>/Shape into one.  A shape answers two questions: is a point material
+// (contains), and which particles, with their domains and volumes, fill the body (fill).
+// The 2-D shapes here are filled on the grid (SubCellShape): a particle at the centre of
+// every n x n sub-cell whose centre the shape contains, the sub-cell being its domain, and
+// fem's Gauss points in the cells whose centre it contains.  A shape that knows better (the
+// 1-D interval's equal particles, a mesh's elements, an image's pixels) fills itself.
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "core/Grid.hpp"
+
+namespace impm {
+
+// An integration point before it becomes a particle: position, domain half-vectors r_k
+// (columns: half[a][k] is component a of r_k) and volume (1-D: length).
+template <int Dim>
+struct Seed {
+  double x[Dim];
+  double half[Dim][Dim];
+  double volume;
+};
+
+template <int Dim>
+class Shape {
+ public:
+  virtual ~Shape() = default;
+
+  // True when x lies in the shape (closed: a point on the boundary is inside).
+  virtual bool contains(const double* x) const = 0;
+  // Bounding box: lower()[d] <= x[d] <= upper()[d].
+  const std::array<double, Dim>& lower() const { return lower_; }
+  const std::array<double, Dim>& upper() const { return upper_; }
+  // Distance from x to the bounding box (0 inside it).
+  double boxDistance(const double* x) const;
+  // The deck parameter that places the shape (named when the body leaves the grid).
+  virtual std::string placement() const = 0;
+
+  // Material points (perCell per cell and direction) or, with gauss, fem's Gauss points (2
+  // per cell and direction), in a rank-independent order.
+  virtual std::vector<Seed<Dim>> fill(const GridGeometry<Dim>& grid, int perCell,
+                                      bool gauss) const = 0;
+
+ protected:
+  std::array<double, Dim> lower_{}, upper_{};
+};
+
+// A 2-D shape filled on the grid's sub-cells (above).
+class SubCellShape : public Shape<2> {
+ public:
+  std::vector<Seed<2>> fill(const GridGeometry<2>& grid, int perCell, bool gauss) const override;
+};
+
+}  // namespace impm

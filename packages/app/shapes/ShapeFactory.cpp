@@ -1,0 +1,89 @@
+#include "app/shapes/ShapeFactory.hpp"
+
+#include <functional>
+#include <type_traits>
+
+#include "app/shapes/Disk.hpp"
+#include "app/shapes/Interval.hpp"
+#include "app/shapes/Polygon.hpp"
+#include "app/shapes/Rectangle.hpp"
+#include "core/Errors.hpp"
+#include "core/Parameters.hpp"
+
+namespace impm {
+
+namespace {
+
+template <int Dim>
+using Creator = std::function<std::shared_ptr<const Shape<Dim>>(const Teuchos::ParameterList&,
+                                                                const std::string&)>;
+
+struct Entry {
+  std::string name;
+  int dimension;
+  std::function<void(Teuchos::ParameterList&)> declare;
+  Creator<1> create1;  // the one of the shape's dimension is set
+  Creator<2> create2;
+};
+
+template <class S>
+Entry entry(const std::string& name) {
+  Entry e{name, std::is_base_of_v<Shape<1>, S> ? 1 : 2, &S::declareParameters, {}, {}};
+  const auto make = [](const Teuchos::ParameterList& p, const std::string& path) {
+    return std::make_shared<const S>(p, path);
+  };
+  if constexpr (std::is_base_of_v<Shape<1>, S>)
+    e.create1 = make;
+  else
+    e.create2 = make;
+  return e;
+}
+
+// The registration lines: one per shape.
+const std::vector<Entry>& registry() {
+  static const std::vector<Entry> shapes = {
+      entry<Interval>("interval"),
+      entry<Rectangle>("rectangle"),
+      entry<Disk>("disk"),
+      entry<Polygon>("polygon"),
+  };
+  return shapes;
+}
+
+}  // namespace
+
+void declareShapeParameters(Teuchos::ParameterList& valid) {
+  std::vector<std::string> names;
+  for (const auto& e : registry())
+    names.push_back(e.name);
+  declareChoice(valid, "Shape", "interval", names,
+                "Geometry of the body in the reference configuration: interval (1-D); "
+                "rectangle, disk or polygon (2-D)");
+  for (const auto& e : registry())
+    e.declare(valid.sublist("[Shape=" + e.name + "]"));
+}
+
+template <int Dim>
+std::shared_ptr<const Shape<Dim>> createShape(const Teuchos::ParameterList& params,
+                                              const std::string& path) {
+  const auto& name = params.get<std::string>("Shape");
+  for (const auto& e : registry()) {
+    if (e.name != name)
+      continue;
+    if (e.dimension != Dim)
+      throw InputError(path + "/Shape", "shape '" + name + "' is " + std::to_string(e.dimension) +
+                                            "-D but the grid is " + std::to_string(Dim) + "-D");
+    if constexpr (Dim == 1)
+      return e.create1(params, path);
+    else
+      return e.create2(params, path);
+  }
+  throw std::logic_error("unregistered shape " + name);
+}
+
+template std::shared_ptr<const Shape<1>> createShape<1>(const Teuchos::ParameterList&,
+                                                        const std::string&);
+template std::shared_ptr<const Shape<2>> createShape<2>(const Teuchos::ParameterList&,
+                                                        const std::string&);
+
+}  // namespace impm

@@ -1,0 +1,151 @@
+#include <cctype>
+
+#include "core/ParticleSet.hpp"
+
+namespace impm {
+
+namespace {
+
+const char* const kAxes = "xyz";
+
+FieldSpec field(const std::string& name, FieldShape shape, const std::string& doc) {
+  FieldSpec s;
+  s.name = name, s.shape = shape, s.doc = doc;
+  return s;
+}
+
+// Columns that are positions or displacements of the Exodus points, not element variables.
+std::vector<OutputColumn> csvOnly(std::vector<OutputColumn> columns) {
+  for (auto& c : columns)
+    c.exodus.clear();
+  return columns;
+}
+
+}  // namespace
+
+template <int Dim>
+std::vector<OutputColumn> defaultColumns(const std::string& name, FieldShape shape) {
+  std::vector<OutputColumn> out;
+  switch (shape) {
+    case FieldShape::scalar:
+      out.push_back({0, name, name});
+      break;
+    case FieldShape::vector:
+      for (int d = 0; d < Dim; ++d)
+        out.push_back({d, Dim == 1 ? name : name + "_" + kAxes[d],
+                       name + static_cast<char>(std::toupper(kAxes[d]))});
+      break;
+    case FieldShape::tensor:
+      for (int a = 0; a < Dim; ++a)
+        for (int b = 0; b < Dim; ++b) {
+          const std::string n = Dim == 1 ? name : name + "_" + kAxes[a] + kAxes[b];
+          out.push_back({a * Dim + b, n, n});
+        }
+      break;
+    case FieldShape::symmetric3x3: {
+      const char* const pairs[6] = {"xx", "yy", "zz", "xy", "yz", "xz"};
+      for (int c = 0; c < 6; ++c)
+        out.push_back({c, name + "_" + pairs[c], name + "_" + pairs[c]});
+      break;
+    }
+  }
+  return out;
+}
+
+bool isFieldName(const std::string& name) {
+  if (name.empty() || !std::isalpha(static_cast<unsigned char>(name[0])))
+    return false;
+  for (char c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_')
+      return false;
+  return true;
+}
+
+// The framework's fields.  Derived fields (strain, J, sigma_zz) are recomputed before every
+// output, so they are neither checkpointed nor migrated; so is the external force, which
+// every step sets before it is used.  Column names and order are the output contract
+// of doc/design.md.
+template <int Dim>
+BuiltinFields<Dim>::BuiltinFields() {
+  static_assert(Dim == 1 || Dim == 2, "BuiltinFields: the output columns of this dimension");
+  const auto vector = FieldShape::vector;
+  const auto tensor = FieldShape::tensor;
+  const auto scalar = FieldShape::scalar;
+  id = field("id", scalar, "global particle id (rows are sorted by it)");
+  id.columns = {{0, "id", ""}};
+  X = field("X", vector, "reference position");
+  X.columns = csvOnly(defaultColumns<Dim>("X", vector));
+  if (Dim == 2)
+    X.columns[0].csv = "X", X.columns[1].csv = "Y";
+  x = field("x", vector, "current position");
+  x.columns = csvOnly(defaultColumns<Dim>("x", vector));
+  if (Dim == 2)
+    x.columns[0].csv = "x", x.columns[1].csv = "y";
+  u = field("u", vector, "displacement");
+  u.columns = csvOnly(defaultColumns<Dim>("u", vector));
+  strain = field("strain", scalar, "1-D: engineering strain F - 1");
+  strain.checkpoint = strain.migrate = false;
+  if (Dim == 1)
+    strain.columns = defaultColumns<Dim>("strain", scalar);
+  stress = field("stress", tensor, "Cauchy stress (1-D: axial force per unit section)");
+  stress.columns = defaultColumns<Dim>("stress", tensor);
+  if (Dim == 2)  // symmetric: xx, yy, xy
+    stress.columns = {stress.columns[0], stress.columns[3], stress.columns[1]};
+  stressZZ = field("stress_zz", scalar, "2-D: out-of-plane Cauchy stress (plane strain)");
+  stressZZ.checkpoint = stressZZ.migrate = false;
+  if (Dim == 2)
+    stressZZ.columns = defaultColumns<Dim>("stress_zz", scalar);
+  J = field("J", scalar, "2-D: volume ratio det F");
+  J.checkpoint = J.migrate = false;
+  if (Dim == 2)
+    J.columns = defaultColumns<Dim>("J", scalar);
+  volume = field("volume", scalar, "current volume V_p (1-D: length)");
+  volume.columns = defaultColumns<Dim>("volume", scalar);
+  v = field("v", vector, "velocity");
+  v.columns = defaultColumns<Dim>("v", vector);
+  for (int d = 0; d < Dim; ++d)
+    v.columns[d].exodus = std::string("velocity") + static_cast<char>(std::toupper(kAxes[d]));
+  a = field("a", vector, "acceleration");
+  a.columns = defaultColumns<Dim>("a", vector);
+  for (int d = 0; d < Dim; ++d)
+    a.columns[d].exodus = std::string("acceleration") + static_cast<char>(std::toupper(kAxes[d]));
+  F = field("F", tensor, "2-D: deformation gradient");
+  if (Dim == 2)
+    F.columns = defaultColumns<Dim>("F", tensor);
+  mass = field("mass", scalar, "mass m_p");
+  mass.columns = defaultColumns<Dim>("mass", scalar);
+  section = field("section", scalar, "1-D: cross-section A(x_p)");
+  if (Dim == 1)
+    section.columns = defaultColumns<Dim>("section", scalar);
+  body = field("body", scalar, "index of the body in the deck");
+  body.columns = defaultColumns<Dim>("body", scalar);
+  // Column k of the domain tensor is the half-vector r_k: r1_x, r1_y, r2_x, r2_y.
+  domain = field("domain", tensor, "2-D: the particle domain's half-vectors r1, r2");
+  domain0 = field("domain0", tensor, "2-D: the reference half-vectors r01, r02");
+  if (Dim == 2)
+    for (int k = 0; k < Dim; ++k)
+      for (int c = 0; c < Dim; ++c) {
+        const std::string axis(1, kAxes[c]);
+        domain.columns.push_back({c * Dim + k, "r" + std::to_string(k + 1) + "_" + axis, ""});
+        domain0.columns.push_back({c * Dim + k, "r0" + std::to_string(k + 1) + "_" + axis, ""});
+      }
+  material = field("material", scalar, "index of the material in the deck");
+  force = field("force", vector, "external force on the particle");
+  force.checkpoint = force.migrate = false;
+  volume0 = field("volume0", scalar, "reference volume");
+}
+
+template <int Dim>
+const BuiltinFields<Dim>& builtinFields() {
+  static const BuiltinFields<Dim> fields;
+  return fields;
+}
+
+template std::vector<OutputColumn> defaultColumns<1>(const std::string&, FieldShape);
+template std::vector<OutputColumn> defaultColumns<2>(const std::string&, FieldShape);
+template struct BuiltinFields<1>;
+template struct BuiltinFields<2>;
+template const BuiltinFields<1>& builtinFields<1>();
+template const BuiltinFields<2>& builtinFields<2>();
+
+}  // namespace impm

@@ -1,0 +1,55 @@
+#pragma once
+// The per-particle arrays of a step (trial F, P and A, and P, A relative to the start of the
+// step), kept from one step to the next.  They are allocated with room to spare and handed
+// out at the step's particle count, so that a step allocates nothing the last one had:
+// migration changes the count on a rank by a few particles per step.
+
+#include "assembly/Kinematics.hpp"
+
+namespace impm {
+
+template <int Dim>
+class StepWorkspace {
+ public:
+  using Tensors = typename ParticleSet<Dim>::Tensors;
+
+  struct Arrays {
+    Tensors F, P, Pn;  // trial F, its first Piola stress, P relative to the step start
+    Tangents<Dim> A, An;
+  };
+
+  // The arrays for n particles (their values are those the last step left).
+  Arrays arrays(std::size_t n);
+
+ private:
+  Arrays buffers_;
+};
+
+// A view of the first n rows of `buffer`, which grows (by an eighth, so that growth is
+// rare) when it holds fewer.  Values are kept only while it does not grow.
+template <class View>
+View firstRows(View& buffer, const std::string& label, std::size_t n) {
+  if (buffer.extent(0) < n)
+    buffer = allocateField(label, buffer, n + n / 8 + 16);
+  const auto rows = Kokkos::make_pair(std::size_t(0), n);
+  if constexpr (View::rank == 1)
+    return Kokkos::subview(buffer, rows);
+  else if constexpr (View::rank == 2)
+    return Kokkos::subview(buffer, rows, Kokkos::ALL());
+  else if constexpr (View::rank == 3)
+    return Kokkos::subview(buffer, rows, Kokkos::ALL(), Kokkos::ALL());
+  else if constexpr (View::rank == 5)
+    return Kokkos::subview(buffer, rows, Kokkos::ALL(), Kokkos::ALL(), Kokkos::ALL(),
+                           Kokkos::ALL());
+  else
+    static_assert(View::rank == 1, "firstRows: add the subview of this rank");
+}
+
+template <int Dim>
+typename StepWorkspace<Dim>::Arrays StepWorkspace<Dim>::arrays(std::size_t n) {
+  return {firstRows(buffers_.F, "trial F", n), firstRows(buffers_.P, "P", n),
+          firstRows(buffers_.Pn, "P relative to step start", n), firstRows(buffers_.A, "A", n),
+          firstRows(buffers_.An, "A relative to step start", n)};
+}
+
+}  // namespace impm

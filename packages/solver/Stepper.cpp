@@ -1,0 +1,88 @@
+#include "solver/Stepper.hpp"
+
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "assembly/Energy.hpp"
+#include "core/Errors.hpp"
+#include "core/Migration.hpp"
+#include "core/Timers.hpp"
+#include "solver/ParticleAdvance.hpp"
+
+namespace impm {
+
+template <int Dim>
+Stepper<Dim>::Stepper(StepperSetup<Dim> setup, double nominal, double minimum)
+    : setup_(std::move(setup)),
+      log_(setup_.ownership.comm()->getRank() == 0 ? &std::cout : nullptr),
+      nominal_(nominal),
+      minimum_(minimum) {}
+
+template <int Dim>
+Teuchos::RCP<GridSystem<Dim>> Stepper<Dim>::buildSystem(double time, double loadFactor) {
+  return Teuchos::rcp(new GridSystem<Dim>(setup_.ownership, setup_.method, setup_.kinematics,
+                                          setup_.particles, setup_.materials, setup_.contributions,
+                                          time, loadFactor, &workspace_));
+}
+
+template <int Dim>
+bool Stepper<Dim>::solve(GridSystem<Dim>& system, Vector& du, NewtonReport& report) const {
+  IMPM_TIMER("Newton solve");
+  report = setup_.newton.solve(Teuchos::rcpFromRef<ResidualModel>(system), du);
+  return report.converged;
+}
+
+template <int Dim>
+void Stepper<Dim>::cutBack(const std::string& step, const std::string& logged,
+                           const std::string& quantity, const std::string& minimumParameter,
+                           const NewtonReport& report) {
+  const double half = size() / 2;
+  if (half < minimum_ * (1 - 1e-12)) {
+    std::ostringstream history;
+    for (double r : report.residualNorms)
+      history << " " << std::scientific << std::setprecision(2) << r;
+    throw NumericalError(step + " failed: " + report.failure + "; |R| history:" + history.str() +
+                         "; the " + quantity + " cannot be cut below " + minimumParameter + " = " +
+                         std::to_string(minimum_));
+  }
+  if (log_)
+    *log_ << "  " << logged << " failed (" << report.failure << "): cutting the " << quantity
+          << " to " << half << "\n";
+  state_.size = half;
+  ++state_.attempts;
+}
+
+template <int Dim>
+void Stepper<Dim>::gridToParticles(GridSystem<Dim>& system, const Vector& du, double workScale) {
+  auto& particles = setup_.particles;
+  const auto uBefore = firstRows(uBefore_, "u before the step", particles.size());
+  Kokkos::deep_copy(uBefore, particles.u);
+  advanceParticles(system, du, setup_.kinematics, particles);
+  system.commit(du);
+  state_.bodyWork += bodyForceWork<Dim>(particles, uBefore, workScale, *setup_.ownership.comm());
+}
+
+template <int Dim>
+void Stepper<Dim>::accept(StepRecord& record, const StepGrid<Dim>& grid,
+                          const StepCallback<Dim>& onStep) {
+  const Comm& comm = *setup_.ownership.comm();
+  record.step = ++state_.step;
+  record.attempts = state_.attempts + 1;
+  record.strainEnergy = strainEnergy<Dim>(setup_.particles, setup_.materials, comm);
+  record.externalWork = state_.bodyWork + contributionWork<Dim>(setup_.contributions);
+  state_.attempts = 0;
+  state_.size = std::min(2 * size(), nominal_);  // grows back after a cutback
+  if (state_.size >= nominal_)
+    state_.size = 0.0;
+  onStep(record, grid);
+  if (setup_.kinematics == Kinematics::updatedLagrangian) {
+    IMPM_TIMER("migration");  // particles live on the rank that owns their cell
+    migrateToOwners(setup_.particles, setup_.ownership.decomposition(), comm);
+  }
+}
+
+template class Stepper<1>;
+template class Stepper<2>;
+
+}  // namespace impm

@@ -1,0 +1,66 @@
+#pragma once
+// What the quasi-static and the dynamic steppers share.  Each of their steps reads as the
+// primer's loop (1.5.3, 1.6.2):
+//   1. buildSystem     the particle-grid map at the particles' positions, the unknowns;
+//   2. solve           Newton on the grid: particle to grid (mass, forces) in every
+//                      evaluation of the residual and its Jacobian;
+//   3. gridToParticles the particles take the step's displacement, deformation and stress;
+//                      the materials and the boundary conditions commit their state;
+//   4. accept          record the step, report it (output, checkpoints), migrate the
+//                      particles to their cells' ranks, let a cut step size grow back.
+// A step whose Newton solve fails is cut back instead of 3-4: nothing was committed, so the
+// particles and the materials' state are those of the last accepted step.
+
+#include <iosfwd>
+#include <string>
+
+#include "solver/StepperSetup.hpp"
+
+namespace impm {
+
+template <int Dim>
+class Stepper {
+ public:
+  // nominal: the step size the deck asks for; minimum: the smallest a cutback may reach.
+  Stepper(StepperSetup<Dim> setup, double nominal, double minimum);
+
+  // The state carried between steps (checkpoints), and its restoration before run().
+  const StepperState& state() const { return state_; }
+  void restore(const StepperState& state) { state_ = state; }
+
+ protected:
+  // The size of the next step (after cutbacks and regrowth).
+  double size() const { return state_.size > 0 ? state_.size : nominal_; }
+
+  // 1. The system of a step at `time` with load factor `loadFactor`.  Collective.
+  Teuchos::RCP<GridSystem<Dim>> buildSystem(double time, double loadFactor);
+
+  // 2. Newton from the guess in du; true when it converged.
+  bool solve(GridSystem<Dim>& system, Vector& du, NewtonReport& report) const;
+
+  // The step of size size() failed: the next attempt takes half of it, or, when that is
+  // below the minimum, NumericalError says "<step> failed: <why>; |R| history ...; the
+  // <quantity> cannot be cut below <minimum parameter> = ...".  `logged` names the step in
+  // the log line.
+  void cutBack(const std::string& step, const std::string& logged, const std::string& quantity,
+               const std::string& minimumParameter, const NewtonReport& report);
+
+  // 3. Grid to particles and commit; the body forces' work over the step (times workScale,
+  // the mean load factor of a static step) is added.
+  void gridToParticles(GridSystem<Dim>& system, const Vector& du, double workScale);
+
+  // 4. The step is accepted: fills the record's step, attempts and energies (the kinetic
+  // energy is the caller's), regrows the step size, reports, migrates.
+  void accept(StepRecord& record, const StepGrid<Dim>& grid, const StepCallback<Dim>& onStep);
+
+  StepperSetup<Dim> setup_;
+  StepperState state_;
+  std::ostream* log_;  // rank 0: the progress log; elsewhere null
+
+ private:
+  double nominal_, minimum_;
+  StepWorkspace<Dim> workspace_;
+  typename ParticleSet<Dim>::Vectors uBefore_;  // kept from step to step, see firstRows
+};
+
+}  // namespace impm
