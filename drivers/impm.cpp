@@ -1,10 +1,10 @@
 // impm: the driver.  Reads an XML deck, checks it, runs it, writes the outputs.
 //
-//   impm [--output-dir DIR] [--set Path/To/Param=value]... deck.xml
+//   impm [--output-dir DIR] [--restart CHECKPOINT] [--set Path/To/Param=value]... deck.xml
 //   impm --list-parameters
 //   impm --help
 //
-// Exit status: 0 success; 1 bad input (nothing written); 2 bad command line;
+// Exit status: 0 success; 1 bad input or checkpoint (nothing written); 2 bad command line;
 // 3 numerical failure (outputs so far are readable); 4 a verification check failed.
 
 #include <Tpetra_Core.hpp>
@@ -24,20 +24,23 @@
 namespace {
 
 const char* kUsage =
-    "usage: impm [--output-dir DIR] [--set Path/To/Param=value]... deck.xml\n"
+    "usage: impm [--output-dir DIR] [--restart CHECKPOINT] [--set Path/To/Param=value]... "
+    "deck.xml\n"
     "       impm --list-parameters\n"
     "       impm --help\n"
     "\n"
     "Runs the implicit MPM/FEM problem described by the Teuchos XML deck.\n"
     "  --output-dir DIR   write the outputs to DIR (default: the deck's Output/Directory)\n"
+    "  --restart FILE     continue the run from a checkpoint FILE the same deck wrote\n"
+    "                     (Output/Checkpoint Every); run controls may change with --set\n"
     "  --set P=V          override parameter P (a path such as Grid/Cells) with value V,\n"
     "                     typed like P; arrays in Teuchos syntax: --set Grid/Cells={64}\n"
     "  --list-parameters  print every deck parameter with its type, default and meaning\n"
-    "Exit status: 0 success, 1 bad input, 2 bad command line, 3 numerical failure,\n"
-    "4 failed verification check.\n";
+    "Exit status: 0 success, 1 bad input or checkpoint, 2 bad command line, 3 numerical\n"
+    "failure, 4 failed verification check.\n";
 
 struct Arguments {
-  std::string deck, outputDirectory;
+  std::string deck, outputDirectory, restart;
   std::vector<impm::Override> overrides;
   bool help = false, list = false;
 };
@@ -59,6 +62,10 @@ Arguments parse(int argc, char** argv) {
       a.outputDirectory = value(arg);
     else if (arg.rfind("--output-dir=", 0) == 0)
       a.outputDirectory = arg.substr(13);
+    else if (arg == "--restart")
+      a.restart = value(arg);
+    else if (arg.rfind("--restart=", 0) == 0)
+      a.restart = arg.substr(10);
     else if (arg == "--set")
       a.overrides.push_back(impm::parseOverride(value(arg)));
     else if (arg.rfind("--set=", 0) == 0)
@@ -78,7 +85,7 @@ Arguments parse(int argc, char** argv) {
 template <int Dim>
 int runDeck(const Teuchos::ParameterList& deck, const Arguments& args,
             const Teuchos::RCP<const impm::Comm>& comm) {
-  impm::Simulation<Dim> simulation(deck, args.deck, args.outputDirectory, comm);
+  impm::Simulation<Dim> simulation(deck, args.deck, args.outputDirectory, comm, args.restart);
   const auto failures = simulation.run();
   if (failures.empty())
     return 0;
@@ -127,6 +134,10 @@ int main(int argc, char** argv) {
   } catch (const impm::InputError& e) {
     if (root)
       std::cerr << "impm: error: " << args.deck << ": " << e.what() << "\n";
+    return 1;
+  } catch (const impm::FileError& e) {
+    if (root)
+      std::cerr << "impm: error: " << e.file() << ": " << e.what() << "\n";
     return 1;
   } catch (const impm::NumericalError& e) {
     if (root)

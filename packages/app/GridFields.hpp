@@ -18,6 +18,7 @@ class GridFields {
 
   const std::vector<std::string>& names() const { return names_; }
   const MultiVector& values() const { return values_; }
+  MultiVector& values() { return values_; }  // restored at a restart
   void update(const StepGrid<Dim>& step);
 
  private:

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <iostream>
 
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
@@ -17,6 +18,14 @@ Teuchos::ParameterList outputValidParameters() {
              Bounds::atLeast(1));
   declareBool(valid, "Exodus", true, "Write Exodus files of the grid and the particles");
   declareBool(valid, "CSV", true, "Write the particle table as CSV");
+  declareInt(valid, "Checkpoint Every", 0,
+             "Write a checkpoint every this many steps and at the last step (0: never), as "
+             "<prefix>_checkpoint_<step>.nc, the newest also as <prefix>_checkpoint.nc; "
+             "impm --restart continues from one",
+             Bounds::atLeast(0));
+  declareInt(valid, "Checkpoints Kept", 2,
+             "How many checkpoints stay in the output directory, the newest (0: all)",
+             Bounds::atLeast(0));
   declareStringArray(valid, "Fields", {},
                      "Particle fields written to the particle CSV and Exodus files (empty: all); "
                      "the framework's (id, X, x, u, strain, stress, stress_zz, J, volume, v, a, "
@@ -152,7 +161,8 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
                     const ParticleSet<Dim>& particles, GlobalId totalParticles,
                     const std::vector<std::string>& historyColumns,
                     const std::vector<std::string>& gridFieldNames,
-                    const std::vector<std::string>& globalNames, Domains domains)
+                    const std::vector<std::string>& globalNames, Domains domains,
+                    const OutputResume* resume)
     : ownership_(ownership),
       domains_(domains),
       root_(ownership.comm()->getRank() == 0),
@@ -162,7 +172,8 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
       totalParticles_(totalParticles),
       gridFields_(gridFieldNames.size()),
       directory_(directory),
-      prefix_(prefix) {
+      prefix_(prefix),
+      exodusSteps_(resume ? resume->exodusSteps : 0) {
   const auto all = outputColumns(particles);
   csvColumns_ = outputColumns(particles, outputFields(params));
   for (const auto& c : csvColumns_)
@@ -188,9 +199,25 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
   if (error)
     throw std::runtime_error("cannot create the output directory " + directory);
   const std::string base = directory + "/" + prefix;
-  history_ = std::make_unique<CsvHistory>(base + "_history.csv", historyColumns);
-  if (!exodus_)
+  history_ = std::make_unique<CsvHistory>(base + "_history.csv", historyColumns,
+                                          resume ? resume->step : -1);
+  std::vector<std::string> restarted;  // files that could not be continued
+  if (resume && !history_->continued())
+    restarted.push_back(history_->path());
+  const auto report = [&] {
+    if (restarted.empty())
+      return;
+    std::cout << "impm: note: these files did not hold the steps before the checkpoint and "
+                 "start at the restart:";
+    for (const auto& f : restarted)
+      std::cout << " " << f;
+    std::cout << "\n";
+  };
+  if (!exodus_) {
+    report();
     return;
+  }
+  const int keep = resume ? resume->exodusSteps : 0;
 
   const auto& g = ownership.grid();
   ExodusMesh grid;
@@ -218,7 +245,7 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
     }
   }
   gridFile_ = std::make_unique<ExodusFile>(base + "_grid.exo", "impm grid", grid, gridFieldNames,
-                                           std::vector<std::string>{}, globalNames);
+                                           std::vector<std::string>{}, globalNames, keep);
 
   ExodusMesh points;
   points.dimension = Dim;
@@ -237,10 +264,15 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
   for (const auto& c : exodusColumns_)
     elements.push_back(c.exodus);
   particleFile_ = std::make_unique<ExodusFile>(base + "_particles.exo", "impm particles", points,
-                                               nodal, elements, globalNames);
+                                               nodal, elements, globalNames, keep);
   if (Dim == 2 && domains_ != Domains::none)
-    domainFile_ = std::make_unique<ExodusFile>(base + "_domains.exo", "impm particle domains",
-                                               domainMesh(table), nodal, elements, globalNames);
+    domainFile_ =
+        std::make_unique<ExodusFile>(base + "_domains.exo", "impm particle domains",
+                                     domainMesh(table), nodal, elements, globalNames, keep);
+  for (const auto* f : {gridFile_.get(), particleFile_.get(), domainFile_.get()})
+    if (f && keep > 0 && !f->continued())
+      restarted.push_back(f->path());
+  report();
 }
 
 namespace {
@@ -338,6 +370,7 @@ void Output<Dim>::writeFields(double time, const ParticleSet<Dim>& particles,
   }
   if (!exodus_)
     return;
+  ++exodusSteps_;
   const auto& table = tables.back();
   const auto nodes = rootMap(ownership_.grid().numNodes(), comm);
   MultiVector gridOnRoot(nodes, gridFields.getNumVectors());

@@ -67,6 +67,13 @@ ParticleTable gatherParticles(const ParticleSet<Dim>& particles,
                               const Teuchos::RCP<const Comm>& comm, GlobalId totalParticles,
                               TableRows rows = TableRows::onRoot);
 
+// A restarted run continues the files of the run it restarts: the history keeps its rows
+// through `step`, the Exodus files their first `exodusSteps` time steps.
+struct OutputResume {
+  int step = 0;
+  int exodusSteps = 0;
+};
+
 template <int Dim>
 class Output {
  public:
@@ -80,7 +87,8 @@ class Output {
          const ParticleSet<Dim>& particles, GlobalId totalParticles,
          const std::vector<std::string>& historyColumns,
          const std::vector<std::string>& gridFieldNames,
-         const std::vector<std::string>& globalNames, Domains domains = Domains::none);
+         const std::vector<std::string>& globalNames, Domains domains = Domains::none,
+         const OutputResume* resume = nullptr);
 
   bool due(int step) const { return step % every_ == 0; }
   // Particle and grid fields at `time`.  gridFields: the named columns on the node map.
@@ -90,6 +98,8 @@ class Output {
   void appendHistory(const std::vector<double>& row) const;
   // Paths of the files written, for the user.
   std::vector<std::string> files() const;
+  // Time steps in the Exodus files so far (the same on every rank).
+  int exodusSteps() const { return exodusSteps_; }
 
  private:
   ExodusMesh domainMesh(const ParticleTable& table) const;
@@ -107,6 +117,7 @@ class Output {
   // The CSV's columns, the Exodus element variables, and all columns gathered (theirs and
   // the points' and domains' geometry).
   std::vector<TableColumn> csvColumns_, exodusColumns_, gathered_;
+  int exodusSteps_ = 0;
   std::unique_ptr<ExodusFile> gridFile_, particleFile_, domainFile_;
   std::unique_ptr<CsvHistory> history_;
 };

@@ -66,7 +66,7 @@ std::string format(double v) {
 template <int Dim>
 Simulation<Dim>::Simulation(const Teuchos::ParameterList& deck, const std::string& deckFile,
                             const std::string& outputDirectory,
-                            const Teuchos::RCP<const Comm>& comm)
+                            const Teuchos::RCP<const Comm>& comm, const std::string& restartFile)
     : comm_(comm), deck_(deck), deckFile_(deckFile), outputDirectory_(outputDirectory) {
   IMPM_TIMER("set-up");
   // Local checks first, agreed on by every rank; then the collective set-up.
@@ -79,6 +79,12 @@ Simulation<Dim>::Simulation(const Teuchos::ParameterList& deck, const std::strin
   });
   const GlobalId local = particles_.size();
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, local, Teuchos::outArg(totalParticles_));
+  identity_ = runIdentity<Dim>(deck_, ownership_->grid(), particles_, totalParticles_, *comm_);
+  const auto& ti = deck_.sublist("Time Integration");
+  gridFields_ = std::make_unique<GridFields<Dim>>(
+      *ownership_, isStatic(ti) || kinematics_ == Kinematics::totalLagrangian, !isStatic(ti));
+  if (!restartFile.empty())
+    restart(restartFile);
   // A dry build of the first step's system: particles outside the grid, or boundary
   // conditions on nodes no integration point reaches, are deck errors.
   try {
@@ -115,11 +121,7 @@ void Simulation<Dim>::setUp(const Teuchos::ParameterList& deck) {
                                         materials_, kinematics_ == Kinematics::updatedLagrangian);
   declareMaterialVariables(particles_, materials_);
   initializeMaterials(particles_, materials_, true);
-  particles_.addDerivation([this](ParticleSet<Dim>& ps) {  // sigma_zz, an output-only field
-    for (std::size_t m = 0; m < materials_.size(); ++m)
-      materials_[m]->outOfPlaneStress(evaluationOf(ps, materials_, static_cast<int>(m), ps.F),
-                                      ps.stressZZ);
-  });
+  addDerivedFields();
   outputColumns(particles_, outputFields(output));  // Output/Fields names output fields
   conditions_ = createBoundaryConditions<Dim>(deck, *bodies_, grid, method_, kinematics_);
   if constexpr (Dim == 1) {
@@ -134,6 +136,52 @@ void Simulation<Dim>::setUp(const Teuchos::ParameterList& deck) {
     }
   }
   verification_ = std::make_unique<Verification>(deck.sublist("Verification"));
+}
+
+template <int Dim>
+void Simulation<Dim>::addDerivedFields() {
+  particles_.addDerivation([this](ParticleSet<Dim>& ps) {  // sigma_zz, an output-only field
+    for (std::size_t m = 0; m < materials_.size(); ++m)
+      materials_[m]->outOfPlaneStress(evaluationOf(ps, materials_, static_cast<int>(m), ps.F),
+                                      ps.stressZZ);
+  });
+}
+
+template <int Dim>
+void Simulation<Dim>::restart(const std::string& file) {
+  // The particles the deck makes identified the problem; the checkpoint's replace them.
+  particles_ = ParticleSet<Dim>();
+  declareMaterialVariables(particles_, materials_);
+  restored_ = std::make_unique<RunState<Dim>>(readCheckpoint<Dim>(
+      file, identity_, ownership_->decomposition(), kinematics_ == Kinematics::totalLagrangian,
+      particles_, gridFields_->values(), comm_));
+  collectively(*comm_, [&] {
+    initializeMaterials(particles_, materials_, false);
+    if (restored_->contributions.size() != conditions_.size())
+      throw FileError(
+          file, "holds the state of " + std::to_string(restored_->contributions.size()) +
+                    " boundary conditions; this deck has " + std::to_string(conditions_.size()));
+    for (std::size_t c = 0; c < conditions_.size(); ++c) {
+      try {
+        conditions_[c]->restore(restored_->contributions[c]);
+      } catch (const std::invalid_argument& e) {
+        throw FileError(file, std::string("boundary condition state: ") + e.what());
+      }
+    }
+  });
+  addDerivedFields();
+}
+
+template <int Dim>
+void Simulation<Dim>::writeCheckpoint(const CheckpointSeries& series, int step,
+                                      const Stepper<Dim>& stepper,
+                                      const Output<Dim>& output) const {
+  IMPM_TIMER("checkpoint");
+  RunState<Dim> state{stepper.state(), {}, output.exodusSteps()};
+  for (const auto& c : conditions_)
+    state.contributions.push_back(c->state());
+  impm::writeCheckpoint<Dim>(series.pathOf(step), identity_, particles_, totalParticles_, state,
+                             gridFields_->values());
 }
 
 template <int Dim>
@@ -210,41 +258,31 @@ std::vector<std::string> Simulation<Dim>::run() {
   const auto& timeIntegration = deck_.sublist("Time Integration");
   const bool dynamic = !isStatic(timeIntegration);
   History<Dim> history(bodies_->columnNames());
-  GridFields<Dim> grid(*ownership_, !dynamic || kinematics_ == Kinematics::totalLagrangian,
-                       dynamic);
+  auto& grid = *gridFields_;
   std::unique_ptr<Output<Dim>> output;
   using Domains = typename Output<Dim>::Domains;
   const Domains domains = method_ == Method::cpdi   ? Domains::parallelogram
                           : method_ == Method::gimp ? Domains::box
                                                     : Domains::none;
   particles_.updateDerived();
+  const OutputResume resume{restored_ ? restored_->stepper.step : 0,
+                            restored_ ? restored_->exodusSteps : 0};
   collectively(*comm_, [&] {
-    output =
-        std::make_unique<Output<Dim>>(deck_.sublist("Output"), outputDirectory_, prefix_,
-                                      *ownership_, particles_, totalParticles_, history.columns(),
-                                      grid.names(), std::vector<std::string>{"F0", "FL"}, domains);
+    output = std::make_unique<Output<Dim>>(
+        deck_.sublist("Output"), outputDirectory_, prefix_, *ownership_, particles_,
+        totalParticles_, history.columns(), grid.names(), std::vector<std::string>{"F0", "FL"},
+        domains, restored_ ? &resume : nullptr);
   });
-  StepRecord initial;
-  initial.kineticEnergy = kineticEnergy<Dim>(particles_, *comm_);
-  initial.strainEnergy = strainEnergy<Dim>(particles_, materials_, *comm_);
-  initial.loadFactor = dynamic ? 1.0 : 0.0;
-  const auto F0 = reactions();
-  output->appendHistory(history.row(initial, F0[0], F0[1], particles_, *comm_));
-  collectively(*comm_, [&] { output->writeFields(0.0, particles_, grid.values(), F0); });
+  if (!restored_) {
+    StepRecord initial;
+    initial.kineticEnergy = kineticEnergy<Dim>(particles_, *comm_);
+    initial.strainEnergy = strainEnergy<Dim>(particles_, materials_, *comm_);
+    initial.loadFactor = dynamic ? 1.0 : 0.0;
+    const auto F0 = reactions();
+    output->appendHistory(history.row(initial, F0[0], F0[1], particles_, *comm_));
+    collectively(*comm_, [&] { output->writeFields(0.0, particles_, grid.values(), F0); });
+  }
 
-  double finalTime = 0.0;
-  const StepCallback<Dim> onStep = [&](const StepRecord& r, const StepGrid<Dim>& step) {
-    grid.update(step);
-    const auto F = reactions();
-    output->appendHistory(history.row(r, F[0], F[1], particles_, *comm_));
-    printProgress(r, F);
-    if (output->due(r.step) || r.last) {
-      IMPM_TIMER("output");
-      particles_.updateDerived();  // output-only fields
-      collectively(*comm_, [&] { output->writeFields(r.time, particles_, grid.values(), F); });
-    }
-    finalTime = r.time;
-  };
   StepperSetup<Dim> setup{
       *ownership_,
       method_,
@@ -255,10 +293,33 @@ std::vector<std::string> Simulation<Dim>::run() {
       *newton_,
       [this](double t) { bodies_->applyLoads(particles_, t); },
       [this](const double* x, double* u, double* v) { bodies_->initialNodalState(x, u, v); }};
+  std::unique_ptr<Stepper<Dim>> stepper;
   if (dynamic)
-    DynamicStepper<Dim>(dynamicSettings(timeIntegration), setup).run(onStep);
+    stepper = std::make_unique<DynamicStepper<Dim>>(dynamicSettings(timeIntegration), setup);
   else
-    QuasiStaticStepper<Dim>(timeIntegration, setup).run(onStep);
+    stepper = std::make_unique<QuasiStaticStepper<Dim>>(timeIntegration, setup);
+  if (restored_)
+    stepper->restore(restored_->stepper);
+  CheckpointSeries series(deck_.sublist("Output"), outputDirectory_, prefix_);
+  double finalTime = stepper->state().time;
+  const StepCallback<Dim> onStep = [&](const StepRecord& r, const StepGrid<Dim>& step) {
+    grid.update(step);
+    const auto F = reactions();
+    output->appendHistory(history.row(r, F[0], F[1], particles_, *comm_));
+    printProgress(r, F);
+    if (output->due(r.step) || r.last) {
+      IMPM_TIMER("output");
+      particles_.updateDerived();  // output-only fields
+      collectively(*comm_, [&] { output->writeFields(r.time, particles_, grid.values(), F); });
+    }
+    if (series.due(r.step, r.last)) {
+      writeCheckpoint(series, r.step, *stepper, *output);
+      if (comm_->getRank() == 0)
+        series.written(r.step);
+    }
+    finalTime = r.time;
+  };
+  stepper->run(onStep);
   return finish(finalTime, output->files());
 }
 

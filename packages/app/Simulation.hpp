@@ -10,12 +10,14 @@
 #include <vector>
 
 #include "app/Bodies.hpp"
+#include "app/Checkpoint.hpp"
+#include "app/GridFields.hpp"
 #include "app/Output.hpp"
 #include "app/Verification.hpp"
 #include "assembly/Kinematics.hpp"
 #include "solver/Contribution.hpp"
 #include "solver/NewtonSolver.hpp"
-#include "solver/StepperSetup.hpp"
+#include "solver/Stepper.hpp"
 
 namespace impm {
 
@@ -24,9 +26,11 @@ class RobinEnd;
 template <int Dim>
 class Simulation {
  public:
-  // Collective; throws InputError (on every rank) when the deck is inconsistent.
+  // Collective; throws InputError (on every rank) when the deck is inconsistent.  With a
+  // checkpoint file the run continues from it; FileError when it cannot.
   Simulation(const Teuchos::ParameterList& deck, const std::string& deckFile,
-             const std::string& outputDirectory, const Teuchos::RCP<const Comm>& comm);
+             const std::string& outputDirectory, const Teuchos::RCP<const Comm>& comm,
+             const std::string& restart = "");
   ~Simulation();
 
   // Runs to the end; returns the failed verification checks (empty: all passed).  Throws
@@ -37,6 +41,10 @@ class Simulation {
 
  private:
   void setUp(const Teuchos::ParameterList& deck);
+  void restart(const std::string& file);
+  void addDerivedFields();
+  void writeCheckpoint(const CheckpointSeries& series, int step, const Stepper<Dim>& stepper,
+                       const Output<Dim>& output) const;
   void checkExplicitTimeStep() const;
   std::vector<double> reactions() const;
   void printHeader() const;
@@ -58,6 +66,9 @@ class Simulation {
   std::shared_ptr<RobinEnd> left_, right_;  // the ends whose forces are F0 and FL
   std::unique_ptr<NewtonSolver> newton_;
   std::unique_ptr<Verification> verification_;
+  std::unique_ptr<GridFields<Dim>> gridFields_;
+  RunIdentity identity_;                     // what a checkpoint of this run must match
+  std::unique_ptr<RunState<Dim>> restored_;  // the checkpoint's state, on a restart
 };
 
 }  // namespace impm

@@ -8,7 +8,7 @@ namespace impm {
 
 namespace {
 
-enum Kind { kNone = 0, kInput = 1, kNumerical = 2, kOther = 3 };
+enum Kind { kNone = 0, kInput = 1, kNumerical = 2, kOther = 3, kFile = 4 };
 
 void broadcastString(const Comm& comm, int root, std::string& s) {
   int n = static_cast<int>(s.size());
@@ -27,6 +27,8 @@ void collectively(const Comm& comm, const std::function<void()>& phase) {
     phase();
   } catch (const InputError& e) {
     kind = kInput, path = e.path(), message = e.what();
+  } catch (const FileError& e) {
+    kind = kFile, path = e.file(), message = e.what();
   } catch (const NumericalError& e) {
     kind = kNumerical, message = e.what();
   } catch (const std::exception& e) {
@@ -48,6 +50,8 @@ void collectively(const Comm& comm, const std::function<void()>& phase) {
                                ? message.substr(prefix.size())
                                : message);
   }
+  if (kind == kFile)
+    throw FileError(path, message);
   if (kind == kNumerical)
     throw NumericalError(message);
   throw std::runtime_error(message);

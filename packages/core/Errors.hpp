@@ -1,8 +1,10 @@
 #pragma once
-// The two kinds of failure a user can cause or meet, each with a one-line message.
+// The kinds of failure a user can cause or meet, each with a one-line message.
 //
 // InputError: the deck is wrong (unknown name, wrong type, value out of range).  It names
 // the parameter path; the driver adds the file name.  Raised before any output is written.
+// FileError: another input file (a checkpoint) is missing, unreadable or of another run.
+// It names the file.  Also raised before any output is written.
 // NumericalError: the computation cannot go on (Newton diverged, a particle left the grid,
 // a non-positive Jacobian).  It says what, where and when.
 
@@ -19,6 +21,18 @@ class InputError : public std::runtime_error {
 
  private:
   std::string path_;
+};
+
+// A file other than the deck (a checkpoint to restart from) that cannot be used: it names
+// the file; the driver prints it instead of the deck's name.  Raised before any output.
+class FileError : public std::runtime_error {
+ public:
+  FileError(const std::string& file, const std::string& what)
+      : std::runtime_error(what), file_(file) {}
+  const std::string& file() const { return file_; }
+
+ private:
+  std::string file_;
 };
 
 class NumericalError : public std::runtime_error {

@@ -6,6 +6,8 @@
 #include <charconv>
 #include <climits>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <stdexcept>
 
 namespace impm {
@@ -58,9 +60,28 @@ std::string formatCsvRows(const std::vector<std::vector<double>>& values) {
   return out;
 }
 
-CsvHistory::CsvHistory(const std::string& path, const std::vector<std::string>& columns)
+CsvHistory::CsvHistory(const std::string& path, const std::vector<std::string>& columns,
+                       int keepThrough)
     : path_(path), columns_(columns) {
-  writeOrThrow(path, "w", header(columns));
+  std::string text = header(columns);
+  if (keepThrough >= 0) {
+    std::ifstream in(path);
+    std::string line;
+    if (in && std::getline(in, line) && line + "\n" == text) {
+      continued_ = true;
+      while (std::getline(in, line)) {
+        char* end = nullptr;
+        const double step = std::strtod(line.c_str(), &end);
+        if (end == line.c_str() || *end != ',' || step > keepThrough)
+          break;  // rows are in step order; a torn last row ends the file too
+        text += line + "\n";
+      }
+    }
+  }
+  // Replaced in one rename, so a crash leaves the old file or the new one.
+  writeOrThrow(path + ".tmp", "w", text);
+  if (std::rename((path + ".tmp").c_str(), path.c_str()) != 0)
+    throw std::runtime_error("cannot write " + path);
 }
 
 void CsvHistory::append(const std::vector<double>& row) const {

@@ -12,15 +12,20 @@ namespace impm {
 
 class CsvHistory {
  public:
-  // Creates (truncates) the file and writes the header.
-  CsvHistory(const std::string& path, const std::vector<std::string>& columns);
+  // Creates (truncates) the file and writes the header.  With keepThrough >= 0 (a restart)
+  // an existing file with the same header keeps its rows whose first column (the step) is at
+  // most keepThrough, and is continued (continued() says whether it was).
+  CsvHistory(const std::string& path, const std::vector<std::string>& columns,
+             int keepThrough = -1);
   void append(const std::vector<double>& row) const;
   const std::vector<std::string>& columns() const { return columns_; }
   const std::string& path() const { return path_; }
+  bool continued() const { return continued_; }
 
  private:
   std::string path_;
   std::vector<std::string> columns_;
+  bool continued_ = false;
 };
 
 // The rows of a table whose column c is values[c]: "v,v,...\n" per row.

@@ -2,6 +2,8 @@
 
 #include <exodusII.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <stdexcept>
 
 namespace impm {
@@ -43,13 +45,35 @@ void putVariableNames(int id, ex_entity_type type, const std::vector<std::string
 ExodusFile::ExodusFile(const std::string& path, const std::string& title, const ExodusMesh& mesh,
                        const std::vector<std::string>& nodalVariables,
                        const std::vector<std::string>& elementVariables,
-                       const std::vector<std::string>& globalVariables)
+                       const std::vector<std::string>& globalVariables, int keepSteps)
     : path_(path),
       numNodes_(mesh.numNodes()),
       numElements_(mesh.numElements()),
       numNodal_(nodalVariables.size()),
       numElement_(elementVariables.size()),
       numGlobal_(globalVariables.size()) {
+  if (keepSteps > 0 && std::filesystem::exists(path)) {
+    // Into a new file beside the old one, then in its place: a crash leaves one of them.
+    const std::string old = path + ".old";
+    std::error_code error;
+    std::filesystem::rename(path, old, error);
+    if (!error) {
+      create(path, title, mesh, nodalVariables, elementVariables, globalVariables);
+      continued_ = copySteps(old, keepSteps);
+      std::filesystem::remove(old, error);
+      if (continued_) {
+        steps_ = keepSteps;
+        return;
+      }
+    }
+  }
+  create(path, title, mesh, nodalVariables, elementVariables, globalVariables);
+}
+
+void ExodusFile::create(const std::string& path, const std::string& title, const ExodusMesh& mesh,
+                        const std::vector<std::string>& nodalVariables,
+                        const std::vector<std::string>& elementVariables,
+                        const std::vector<std::string>& globalVariables) const {
   int cpuWordSize = sizeof(double), ioWordSize = sizeof(double);
   const int id = ex_create(path.c_str(), EX_CLOBBER, &cpuWordSize, &ioWordSize);
   check(id, path, "create");
@@ -75,6 +99,51 @@ ExodusFile::ExodusFile(const std::string& path, const std::string& title, const 
   putVariableNames(id, EX_ELEM_BLOCK, elementVariables, path);
   putVariableNames(id, EX_GLOBAL, globalVariables, path);
   check(ex_close(id), path, "close");
+}
+
+bool ExodusFile::copySteps(const std::string& from, int steps) const {
+  int cpuWordSize = sizeof(double), ioWordSize = 0;
+  float version = 0;
+  const int in = ex_open(from.c_str(), EX_READ, &cpuWordSize, &ioWordSize, &version);
+  if (in < 0)
+    return false;
+  ex_init_params p{};
+  int nodal = 0, element = 0, global = 0;
+  const bool fits =
+      ex_get_init_ext(in, &p) >= 0 && static_cast<std::size_t>(p.num_nodes) == numNodes_ &&
+      static_cast<std::size_t>(p.num_elem) == numElements_ &&
+      ex_get_variable_param(in, EX_NODAL, &nodal) >= 0 &&
+      ex_get_variable_param(in, EX_ELEM_BLOCK, &element) >= 0 &&
+      ex_get_variable_param(in, EX_GLOBAL, &global) >= 0 &&
+      static_cast<std::size_t>(nodal) == numNodal_ &&
+      static_cast<std::size_t>(element) == numElement_ &&
+      static_cast<std::size_t>(global) == numGlobal_ && ex_inquire_int(in, EX_INQ_TIME) >= steps;
+  bool copied = fits;
+  if (fits) {
+    const int out = openForAppend(path_);
+    std::vector<double> values(std::max({numNodes_, numElements_, numGlobal_, std::size_t(1)}));
+    const auto copy = [&](int step, ex_entity_type type, std::size_t variables, std::size_t n) {
+      for (std::size_t v = 0; v < variables && copied; ++v)
+        copied = ex_get_var(in, step, type, static_cast<int>(v + 1), 1, static_cast<int64_t>(n),
+                            values.data()) >= 0 &&
+                 ex_put_var(out, step, type, static_cast<int>(v + 1), 1, static_cast<int64_t>(n),
+                            values.data()) >= 0;
+    };
+    for (int step = 1; step <= steps && copied; ++step) {
+      double time = 0.0;
+      copied = ex_get_time(in, step, &time) >= 0 && ex_put_time(out, step, &time) >= 0;
+      copy(step, EX_NODAL, numNodal_, numNodes_);
+      copy(step, EX_ELEM_BLOCK, numElement_, numElements_);
+      if (numGlobal_ && copied)
+        copied = ex_get_var(in, step, EX_GLOBAL, 1, 0, static_cast<int64_t>(numGlobal_),
+                            values.data()) >= 0 &&
+                 ex_put_var(out, step, EX_GLOBAL, 1, 0, static_cast<int64_t>(numGlobal_),
+                            values.data()) >= 0;
+    }
+    check(ex_close(out), path_, "close");
+  }
+  ex_close(in);
+  return copied;
 }
 
 void ExodusFile::append(double time, const std::vector<std::vector<double>>& nodal,

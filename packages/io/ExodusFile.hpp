@@ -24,10 +24,14 @@ struct ExodusMesh {
 class ExodusFile {
  public:
   // Creates (overwrites) the file.  Throws std::runtime_error naming the file on failure.
+  // With keepSteps > 0 (a restart) the file is continued instead: an existing file of this
+  // mesh and these variables keeps its first keepSteps time steps (later ones, written
+  // after the checkpoint, are dropped by a copy); if there is none, or it does not fit, a
+  // new file is made (continued() says which).
   ExodusFile(const std::string& path, const std::string& title, const ExodusMesh& mesh,
              const std::vector<std::string>& nodalVariables,
              const std::vector<std::string>& elementVariables,
-             const std::vector<std::string>& globalVariables);
+             const std::vector<std::string>& globalVariables, int keepSteps = 0);
 
   // Appends time step `time`; values[variable][node or element].
   void append(double time, const std::vector<std::vector<double>>& nodal,
@@ -35,12 +39,20 @@ class ExodusFile {
 
   const std::string& path() const { return path_; }
   int stepsWritten() const { return steps_; }
+  bool continued() const { return continued_; }
 
  private:
+  void create(const std::string& path, const std::string& title, const ExodusMesh& mesh,
+              const std::vector<std::string>& nodal, const std::vector<std::string>& element,
+              const std::vector<std::string>& global) const;
+  // Copies the first `steps` time steps of `from` into the (new) file at path_; false when
+  // `from` does not have this mesh's sizes and variables or fewer steps.
+  bool copySteps(const std::string& from, int steps) const;
   std::string path_;
   std::size_t numNodes_, numElements_;
   std::size_t numNodal_, numElement_, numGlobal_;
   int steps_ = 0;
+  bool continued_ = false;
 };
 
 }  // namespace impm

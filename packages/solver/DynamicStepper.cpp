@@ -1,5 +1,7 @@
 #include "solver/DynamicStepper.hpp"
 
+#include <Teuchos_CommHelpers.hpp>
+
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -157,16 +159,24 @@ void DynamicStepper<Dim>::restoreNodalState(GridSystem<Dim>& system) {
   u_ = Teuchos::rcp(new Vector(system.unknownMap()));
   v_ = Teuchos::rcp(new Vector(system.unknownMap()));
   a_ = Teuchos::rcp(new Vector(system.unknownMap()));
+  // Every rank holds the whole state and takes the unknowns it owns; together they must
+  // take all of them, each once.
   const auto& map = *system.unknownMap();
+  int taken = 0, all = 0;
   for (std::size_t k = 0; k < s.nodalDofs.size(); ++k) {
     const LO lid = map.getLocalElement(s.nodalDofs[k]);
     if (lid == Teuchos::OrdinalTraits<LO>::invalid())
-      throw std::invalid_argument("the restored nodal state names unknown " +
-                                  std::to_string(s.nodalDofs[k]) + ", which this grid lacks");
+      continue;
     u_->replaceLocalValue(lid, s.nodalU[k]);
     v_->replaceLocalValue(lid, s.nodalV[k]);
     a_->replaceLocalValue(lid, s.nodalA[k]);
+    ++taken;
   }
+  Teuchos::reduceAll(*map.getComm(), Teuchos::REDUCE_SUM, taken, Teuchos::outArg(all));
+  if (all != static_cast<int>(s.nodalDofs.size()))
+    throw std::runtime_error("the restored nodal state does not fit this grid's unknowns (" +
+                             std::to_string(all) + " of " + std::to_string(s.nodalDofs.size()) +
+                             " found)");
 }
 
 template <int Dim>
@@ -225,7 +235,11 @@ void DynamicStepper<Dim>::run(const StepCallback<Dim>& onStep) {
   const double T = settings_.finalTime;
   const auto done = [&] { return state.time >= T - 1e-9 * settings_.timeStep; };
   while (!done()) {
-    const double t = state.time, h = std::min(this->size(), T - t);
+    // The last step ends at T, unless T is a whole step away up to round-off: then the
+    // step keeps its size, so that stopping at T and extending the run later takes the
+    // same steps as running on.
+    const double t = state.time, dt = this->size();
+    const double h = T - t > dt * (1 - 1e-9) ? dt : T - t;
     this->setup_.applyLoads(settings_.isExplicit() ? t : t + h);
     // 1. The particle-grid map (a fixed grid keeps its own), the grid's v^n and a^n.
     auto system = systemAt(t + h);

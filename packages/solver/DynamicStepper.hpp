@@ -43,7 +43,7 @@ class DynamicStepper : public Stepper<Dim> {
   // accepted step.  A step whose Newton solve fails is retried with half the time step, down
   // to the minimum.  Throws NumericalError (with the time) when that fails or a particle
   // leaves the grid.
-  void run(const StepCallback<Dim>& onStep);
+  void run(const StepCallback<Dim>& onStep) override;
 
   // The explicit stability limit h / c, c the largest wave speed sqrt(E / rho).  Collective.
   static double stableTimeStep(const GridGeometry<Dim>& grid, const ParticleSet<Dim>& particles,

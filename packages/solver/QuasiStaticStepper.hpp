@@ -19,7 +19,7 @@ class QuasiStaticStepper : public Stepper<Dim> {
   // Runs the load steps left (all of them, or those after a restored state); calls onStep
   // after each accepted one.  Throws NumericalError when an increment fails at the smallest
   // size.
-  void run(const StepCallback<Dim>& onStep);
+  void run(const StepCallback<Dim>& onStep) override;
 
  private:
   double time_;

@@ -23,6 +23,11 @@ class Stepper {
  public:
   // nominal: the step size the deck asks for; minimum: the smallest a cutback may reach.
   Stepper(StepperSetup<Dim> setup, double nominal, double minimum);
+  virtual ~Stepper() = default;
+
+  // Runs the steps left (all, or those after a restored state); calls onStep after each
+  // accepted one.  Throws NumericalError when a step fails at the smallest size.
+  virtual void run(const StepCallback<Dim>& onStep) = 0;
 
   // The state carried between steps (checkpoints), and its restoration before run().
   const StepperState& state() const { return state_; }

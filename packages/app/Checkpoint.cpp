@@ -1,0 +1,397 @@
+#include "app/Checkpoint.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+#include "core/Collective.hpp"
+#include "core/Errors.hpp"
+#include "core/MpiComm.hpp"
+#include "io/CheckpointFile.hpp"
+
+namespace impm {
+
+namespace {
+
+// Rows of the particle fields read at a time (bounds the memory a restart needs).
+constexpr std::size_t kChunk = 1 << 16;
+
+std::string particleVariable(const std::string& field) {
+  return "particle_" + field;
+}
+
+// "name:model,..." of the deck's materials; "name,..." of its bodies.
+std::string materialList(const Teuchos::ParameterList& deck) {
+  std::string out;
+  const auto& materials = deck.sublist("Materials");
+  for (auto it = materials.begin(); it != materials.end(); ++it)
+    out += (out.empty() ? "" : ",") + materials.name(it) + ":" +
+           materials.sublist(materials.name(it)).get<std::string>("Model");
+  return out;
+}
+
+std::string bodyList(const Teuchos::ParameterList& deck) {
+  std::string out;
+  const auto& bodies = deck.sublist("Bodies");
+  for (auto it = bodies.begin(); it != bodies.end(); ++it)
+    out += (out.empty() ? "" : ",") + bodies.name(it);
+  return out;
+}
+
+template <class T>
+std::string listed(const std::vector<T>& v) {
+  std::ostringstream s;
+  s << std::setprecision(17) << "{";
+  for (std::size_t k = 0; k < v.size(); ++k)
+    s << (k ? ", " : "") << v[k];
+  return s.str() + "}";
+}
+
+// A map with every index 0..n-1 on rank 0 and nothing elsewhere.
+Teuchos::RCP<const Map> rootMap(GlobalId n, const Teuchos::RCP<const Comm>& comm) {
+  const std::size_t local = comm->getRank() == 0 ? static_cast<std::size_t>(n) : 0;
+  return Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(n), local, 0, comm));
+}
+
+void writeIdentity(CheckpointWriter& file, const RunIdentity& id) {
+  file.attribute("grid_cells", id.cells);
+  file.attribute("grid_origin", id.origin);
+  file.attribute("grid_spacing", id.spacing);
+  file.attribute("method", id.method);
+  file.attribute("kinematics", id.kinematics);
+  file.attribute("time_integration", id.timeIntegration);
+  file.attribute("materials", id.materials);
+  file.attribute("bodies", id.bodies);
+  file.attribute("particles", std::vector<long long>{id.particles});
+  file.attribute("fingerprint", std::vector<long long>{id.fingerprint});
+}
+
+// The first difference between the checkpoint's problem and this deck's, or "".
+std::string identityDifference(const CheckpointReader& file, const RunIdentity& id) {
+  const auto differs = [](const std::string& what, const std::string& theirs,
+                          const std::string& ours) {
+    return "is a checkpoint of another problem: its " + what + " is " + theirs + ", this deck's " +
+           ours;
+  };
+  if (file.integers("grid_cells").size() != id.cells.size())
+    return differs("dimension", std::to_string(file.integers("grid_cells").size()) + "-D",
+                   std::to_string(id.cells.size()) + "-D");
+  if (file.text("method") != id.method)
+    return differs("method", file.text("method"), id.method);
+  if (file.text("kinematics") != id.kinematics)
+    return differs("kinematics", file.text("kinematics"), id.kinematics);
+  if (file.text("time_integration") != id.timeIntegration)
+    return differs("time integration", file.text("time_integration"), id.timeIntegration);
+  if (file.integers("grid_cells") != id.cells)
+    return differs("grid", listed(file.integers("grid_cells")) + " cells", listed(id.cells));
+  if (file.numbers("grid_origin") != id.origin || file.numbers("grid_spacing") != id.spacing)
+    return differs("grid",
+                   "at " + listed(file.numbers("grid_origin")) + " with spacing " +
+                       listed(file.numbers("grid_spacing")),
+                   "at " + listed(id.origin) + " with spacing " + listed(id.spacing));
+  if (file.text("materials") != id.materials)
+    return differs("materials", "'" + file.text("materials") + "'", "'" + id.materials + "'");
+  if (file.text("bodies") != id.bodies)
+    return differs("bodies", "'" + file.text("bodies") + "'", "'" + id.bodies + "'");
+  if (file.integers("particles") != std::vector<long long>{id.particles})
+    return differs("particle count", std::to_string(file.integers("particles").at(0)),
+                   std::to_string(id.particles));
+  if (file.integers("fingerprint") != std::vector<long long>{id.fingerprint})
+    return "is a checkpoint of another problem: its particles start at other reference "
+           "positions (or have other ids) than this deck's";
+  return "";
+}
+
+}  // namespace
+
+template <int Dim>
+RunIdentity runIdentity(const Teuchos::ParameterList& deck, const GridGeometry<Dim>& grid,
+                        const ParticleSet<Dim>& particles, GlobalId totalParticles,
+                        const Comm& comm) {
+  RunIdentity id;
+  for (int d = 0; d < Dim; ++d) {
+    id.cells.push_back(grid.cells[d]);
+    id.origin.push_back(grid.origin[d]);
+    id.spacing.push_back(grid.spacing[d]);
+  }
+  const auto& discretization = deck.sublist("Discretization");
+  id.method = discretization.get<std::string>("Method");
+  id.kinematics = discretization.get<std::string>("Kinematics");
+  id.timeIntegration = deck.sublist("Time Integration").get<std::string>("Type");
+  id.materials = materialList(deck);
+  id.bodies = bodyList(deck);
+  id.particles = totalParticles;
+  // The fingerprint sums a hash of each particle's id and reference position: independent
+  // of the particles' order and ranks, and of everything that changes while the run goes.
+  const auto host = particles.mirror(Kokkos::DefaultHostExecutionSpace());
+  std::uint64_t local = 0, global = 0;
+  for (std::size_t p = 0; p < particles.size(); ++p) {
+    double row[Dim + 1];
+    row[0] = static_cast<double>(host.id(p));
+    for (int d = 0; d < Dim; ++d)
+      row[d + 1] = host.X(p, d);
+    local += rowHash(static_cast<std::size_t>(host.id(p)), row, sizeof row);
+  }
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
+  id.fingerprint = static_cast<long long>(global);
+  return id;
+}
+
+template <int Dim>
+void writeCheckpoint(const std::string& path, const RunIdentity& identity,
+                     const ParticleSet<Dim>& particles, GlobalId totalParticles,
+                     const RunState<Dim>& state, const MultiVector& gridFields) {
+  const auto& comm = gridFields.getMap()->getComm();
+  const bool root = comm->getRank() == 0;
+  std::unique_ptr<CheckpointWriter> file;
+  const auto& s = state.stepper;
+  // Rank 0 writes; every rank learns of a failure (a full disk) at the end.
+  const auto onRoot = [&](const std::function<void()>& f) {
+    collectively(*comm, [&] {
+      if (root)
+        f();
+    });
+  };
+  // The fixed grid's nodal state (unknown, u, v, a), gathered to rank 0.
+  std::vector<double> nodal;
+  for (std::size_t k = 0; k < s.nodalDofs.size(); ++k)
+    nodal.insert(nodal.end(),
+                 {static_cast<double>(s.nodalDofs[k]), s.nodalU[k], s.nodalV[k], s.nodalA[k]});
+  int count = static_cast<int>(nodal.size()), total = 0;
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, count, Teuchos::outArg(total));
+  std::vector<int> counts(comm->getSize());
+  const MPI_Comm mpi = rawComm(*comm);
+  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, mpi);
+  std::vector<int> offsets(comm->getSize(), 0);
+  for (int r = 1; r < comm->getSize(); ++r)
+    offsets[r] = offsets[r - 1] + counts[r - 1];
+  std::vector<double> allNodal(root ? total : 0);
+  MPI_Gatherv(nodal.data(), count, MPI_DOUBLE, allNodal.data(), counts.data(), offsets.data(),
+              MPI_DOUBLE, 0, mpi);
+  onRoot([&] {
+    file = std::make_unique<CheckpointWriter>(path);
+    writeIdentity(*file, identity);
+    file->attribute(
+        "step", std::vector<long long>{s.step, s.attempts, s.started ? 1 : 0, state.exodusSteps});
+    file->attribute("time", std::vector<double>{s.time, s.loadFactor, s.size, s.bodyWork});
+    for (std::size_t c = 0; c < state.contributions.size(); ++c)
+      file->attribute("contribution_" + std::to_string(c), state.contributions[c]);
+    particles.forEachField([&](const FieldSpec& spec, const auto& view) {
+      if (spec.checkpoint)
+        file->declare(particleVariable(spec.name), totalParticles, fieldWidth(view),
+                      std::is_integral_v<typename std::decay_t<decltype(view)>::value_type>);
+    });
+    file->declare("grid_fields", gridFields.getGlobalLength(), gridFields.getNumVectors(), false);
+    file->declare("nodal_state", total / 4, 4, false);
+  });
+  // Particle fields, one at a time: gathered to rank 0 by id.
+  const auto host = particles.mirror(Kokkos::DefaultHostExecutionSpace());
+  std::vector<GO> gids(host.id.data(), host.id.data() + particles.size());
+  auto source = Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(totalParticles),
+                                     Teuchos::ArrayView<const GO>(gids), 0, comm));
+  const auto target = rootMap(totalParticles, comm);
+  const Import gather(source, target);
+  host.forEachField([&](const FieldSpec& spec, const auto& view) {
+    if (!spec.checkpoint)
+      return;
+    const int width = fieldWidth(view);
+    MultiVector local(source, width), all(target, width);
+    for (int c = 0; c < width; ++c) {
+      auto data = local.getDataNonConst(c);
+      for (std::size_t p = 0; p < particles.size(); ++p)
+        data[p] = fieldComponent(view, p, c);
+    }
+    all.doImport(local, gather, Tpetra::INSERT);
+    onRoot([&] {
+      std::vector<double> values(totalParticles * width);
+      for (int c = 0; c < width; ++c) {
+        auto data = all.getData(c);
+        for (GlobalId p = 0; p < totalParticles; ++p)
+          values[p * width + c] = data[p];
+      }
+      using Value = typename std::decay_t<decltype(view)>::value_type;
+      if constexpr (std::is_integral_v<Value>)
+        file->write(particleVariable(spec.name),
+                    std::vector<long long>(values.begin(), values.end()));
+      else
+        file->write(particleVariable(spec.name), values);
+    });
+  });
+  // The grid's output fields.
+  const auto nodes = rootMap(static_cast<GlobalId>(gridFields.getGlobalLength()), comm);
+  MultiVector grid(nodes, gridFields.getNumVectors());
+  grid.doImport(gridFields, Import(gridFields.getMap(), nodes), Tpetra::INSERT);
+  onRoot([&] {
+    std::vector<double> values(grid.getLocalLength() * grid.getNumVectors());
+    for (std::size_t c = 0; c < grid.getNumVectors(); ++c) {
+      auto data = grid.getData(c);
+      for (std::size_t i = 0; i < grid.getLocalLength(); ++i)
+        values[i * grid.getNumVectors() + c] = data[i];
+    }
+    file->write("grid_fields", values);
+    // Sorted by unknown, so that the file does not depend on the ranks.
+    std::vector<std::array<double, 4>> rows(allNodal.size() / 4);
+    std::memcpy(rows.data(), allNodal.data(), allNodal.size() * sizeof(double));
+    std::sort(rows.begin(), rows.end());
+    std::memcpy(allNodal.data(), rows.data(), allNodal.size() * sizeof(double));
+    file->write("nodal_state", allNodal);
+    file->commit();
+  });
+}
+
+template <int Dim>
+RunState<Dim> readCheckpoint(const std::string& path, const RunIdentity& identity,
+                             const Decomposition<Dim>& decomposition, bool byReference,
+                             ParticleSet<Dim>& particles, MultiVector& gridFields,
+                             const Teuchos::RCP<const Comm>& comm) {
+  RunState<Dim> state;
+  collectively(*comm, [&] {
+    const CheckpointReader file(path);
+    const std::string difference = identityDifference(file, identity);
+    if (!difference.empty())
+      throw FileError(path, difference);
+    const auto steps = file.integers("step");
+    const auto times = file.numbers("time");
+    if (steps.size() != 4 || times.size() != 4)
+      throw FileError(path, "has a malformed stepper state");
+    auto& s = state.stepper;
+    s.step = static_cast<int>(steps[0]), s.attempts = static_cast<int>(steps[1]);
+    s.started = steps[2] != 0, state.exodusSteps = static_cast<int>(steps[3]);
+    s.time = times[0], s.loadFactor = times[1], s.size = times[2], s.bodyWork = times[3];
+    for (int c = 0;; ++c) {
+      try {
+        state.contributions.push_back(file.numbers("contribution_" + std::to_string(c)));
+      } catch (const FileError&) {
+        break;
+      }
+    }
+    const auto nodal = file.rows("nodal_state", 0, file.shape("nodal_state").first);
+    for (std::size_t k = 0; k + 3 < nodal.size(); k += 4) {
+      s.nodalDofs.push_back(static_cast<GO>(nodal[k]));
+      s.nodalU.push_back(nodal[k + 1]), s.nodalV.push_back(nodal[k + 2]);
+      s.nodalA.push_back(nodal[k + 3]);
+    }
+    // The particles, in chunks of ids: each rank keeps those in its cells.
+    const auto total = static_cast<std::size_t>(identity.particles);
+    const std::string place = particleVariable(byReference ? "X" : "x");
+    std::vector<std::size_t> keep;  // rows kept, ascending
+    for (std::size_t first = 0; first < total; first += kChunk) {
+      const std::size_t count = std::min(kChunk, total - first);
+      const auto x = file.rows(place, first, count, false);
+      for (std::size_t r = 0; r < count; ++r)
+        if (decomposition.ownerOfPoint(&x[r * Dim]) == comm->getRank())
+          keep.push_back(first + r);
+    }
+    ParticleSet<Dim, Kokkos::DefaultHostExecutionSpace> host =
+        particles.mirror(Kokkos::DefaultHostExecutionSpace());
+    host.resize(keep.size());
+    host.forEachField([&](const FieldSpec& spec, auto& view) {
+      if (!spec.checkpoint)
+        return;
+      const std::string name = particleVariable(spec.name);
+      if (!file.has(name))
+        throw FileError(path, "has no particle field '" + spec.name + "'");
+      const int width = fieldWidth(view);
+      if (file.shape(name) != std::make_pair(total, static_cast<std::size_t>(width)))
+        throw FileError(path, "particle field '" + spec.name + "' has the wrong shape");
+      std::size_t next = 0;  // index into keep
+      for (std::size_t first = 0; first < total; first += kChunk) {
+        const std::size_t count = std::min(kChunk, total - first);
+        using Value = typename std::decay_t<decltype(view)>::non_const_value_type;
+        std::vector<double> values;
+        if constexpr (std::is_integral_v<Value>) {
+          const auto integers = file.integerRows(name, first, count);
+          values.assign(integers.begin(), integers.end());
+        } else {
+          values = file.rows(name, first, count);
+        }
+        for (; next < keep.size() && keep[next] < first + count; ++next)
+          for (int c = 0; c < width; ++c)
+            setFieldComponent(view, next, c, values[(keep[next] - first) * width + c]);
+      }
+    });
+    const auto [rows, columns] = file.shape("grid_fields");
+    if (rows != gridFields.getGlobalLength() || columns != gridFields.getNumVectors())
+      throw FileError(path, "its grid fields do not fit this grid's");
+    const auto grid = file.rows("grid_fields", 0, rows);
+    const auto& map = *gridFields.getMap();
+    for (std::size_t i = 0; i < map.getNodeNumElements(); ++i)
+      for (std::size_t c = 0; c < columns; ++c)
+        gridFields.replaceLocalValue(static_cast<LO>(i), c,
+                                     grid[map.getGlobalElement(static_cast<LO>(i)) * columns + c]);
+    file.checkSums();
+    particles.copyFrom(host);
+  });
+  return state;
+}
+
+CheckpointSeries::CheckpointSeries(const Teuchos::ParameterList& output,
+                                   const std::string& directory, const std::string& prefix)
+    : every_(output.get<int>("Checkpoint Every")),
+      kept_(output.get<int>("Checkpoints Kept")),
+      directory_(directory),
+      prefix_(prefix) {}
+
+bool CheckpointSeries::due(int step, bool last) const {
+  return every_ > 0 && (step % every_ == 0 || last);
+}
+
+std::string CheckpointSeries::pathOf(int step) const {
+  std::ostringstream s;
+  s << directory_ << "/" << prefix_ << "_checkpoint_" << std::setw(6) << std::setfill('0') << step
+    << ".nc";
+  return s.str();
+}
+
+void CheckpointSeries::written(int step) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  // The newest, under a fixed name: a link replaced in one rename.
+  const fs::path link = fs::path(directory_) / (prefix_ + "_checkpoint.nc");
+  const fs::path staged = link.string() + ".link";
+  fs::remove(staged, error);
+  fs::create_symlink(fs::path(pathOf(step)).filename(), staged, error);
+  if (!error)
+    fs::rename(staged, link, error);
+  if (kept_ <= 0)
+    return;
+  // The checkpoints of this prefix in the directory, oldest first; unfinished ones go.
+  std::vector<std::pair<int, fs::path>> found;
+  const std::string head = prefix_ + "_checkpoint_";
+  for (const auto& entry : fs::directory_iterator(directory_, error)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(head, 0) != 0)
+      continue;
+    const std::string rest = name.substr(head.size());
+    if (rest.size() > 7 && rest.compare(rest.size() - 7, 7, ".nc.tmp") == 0) {
+      fs::remove(entry.path(), error);
+      continue;
+    }
+    if (rest.size() == 9 && rest.compare(6, 3, ".nc") == 0 &&
+        std::all_of(rest.begin(), rest.begin() + 6, ::isdigit))
+      found.emplace_back(std::stoi(rest.substr(0, 6)), entry.path());
+  }
+  std::sort(found.begin(), found.end());
+  for (std::size_t k = 0; k + kept_ < found.size(); ++k)
+    if (found[k].first != step)
+      fs::remove(found[k].second, error);
+}
+
+#define IMPM_INSTANTIATE(D)                                                                       \
+  template RunIdentity runIdentity<D>(const Teuchos::ParameterList&, const GridGeometry<D>&,      \
+                                      const ParticleSet<D>&, GlobalId, const Comm&);              \
+  template void writeCheckpoint<D>(const std::string&, const RunIdentity&, const ParticleSet<D>&, \
+                                   GlobalId, const RunState<D>&, const MultiVector&);             \
+  template RunState<D> readCheckpoint<D>(const std::string&, const RunIdentity&,                  \
+                                         const Decomposition<D>&, bool, ParticleSet<D>&,          \
+                                         MultiVector&, const Teuchos::RCP<const Comm>&);
+IMPM_INSTANTIATE(1)
+IMPM_INSTANTIATE(2)
+#undef IMPM_INSTANTIATE
+
+}  // namespace impm

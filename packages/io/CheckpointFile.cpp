@@ -1,0 +1,286 @@
+#include "io/CheckpointFile.hpp"
+
+#include <fcntl.h>
+#include <netcdf.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "core/Errors.hpp"
+
+namespace impm {
+
+namespace {
+
+const char* const kVersion = "impm_checkpoint_version";
+const char* const kChecksum = "checksum";
+
+// Throws FileError(path, what + netCDF's reason) when status is an error.
+void check(int status, const std::string& path, const std::string& what) {
+  if (status != NC_NOERR)
+    throw FileError(path, what + " (" + nc_strerror(status) + ")");
+}
+
+// The data reaches the disk before the rename that makes it the checkpoint.
+void syncFile(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY);
+  if (fd >= 0) {
+    ::fsync(fd);
+    ::close(fd);
+  }
+}
+
+template <class T>
+std::uint64_t checksum(const std::vector<T>& values, std::size_t columns) {
+  std::uint64_t sum = 0;
+  const std::size_t rows = columns ? values.size() / columns : 0;
+  for (std::size_t r = 0; r < rows; ++r)
+    sum += rowHash(r, values.data() + r * columns, columns * sizeof(T));
+  return sum;
+}
+
+}  // namespace
+
+std::uint64_t rowHash(std::size_t row, const void* data, std::size_t bytes) {
+  std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the row index, then the bytes
+  const auto mix = [&h](const unsigned char* p, std::size_t n) {
+    for (std::size_t k = 0; k < n; ++k)
+      h = (h ^ p[k]) * 1099511628211ull;
+  };
+  const std::uint64_t index = row;
+  mix(reinterpret_cast<const unsigned char*>(&index), sizeof index);
+  mix(static_cast<const unsigned char*>(data), bytes);
+  return h;
+}
+
+CheckpointWriter::CheckpointWriter(const std::string& path)
+    : path_(path), temporary_(path + ".tmp") {
+  check(nc_create(temporary_.c_str(), NC_CLOBBER | NC_NETCDF4, &id_), temporary_,
+        "cannot create the checkpoint");
+  const int version = kCheckpointVersion;
+  check(nc_put_att_int(id_, NC_GLOBAL, kVersion, NC_INT, 1, &version), temporary_, "version");
+}
+
+CheckpointWriter::~CheckpointWriter() {
+  if (id_ >= 0) {
+    nc_close(id_);
+    std::remove(temporary_.c_str());
+  }
+}
+
+void CheckpointWriter::attribute(const std::string& name, const std::string& value) {
+  check(nc_put_att_text(id_, NC_GLOBAL, name.c_str(), value.size(), value.c_str()), temporary_,
+        "attribute " + name);
+}
+
+void CheckpointWriter::attribute(const std::string& name, const std::vector<double>& values) {
+  check(nc_put_att_double(id_, NC_GLOBAL, name.c_str(), NC_DOUBLE, values.size(), values.data()),
+        temporary_, "attribute " + name);
+}
+
+void CheckpointWriter::attribute(const std::string& name, const std::vector<long long>& values) {
+  check(nc_put_att_longlong(id_, NC_GLOBAL, name.c_str(), NC_INT64, values.size(), values.data()),
+        temporary_, "attribute " + name);
+}
+
+void CheckpointWriter::declare(const std::string& name, std::size_t rows, std::size_t columns,
+                               bool integer) {
+  if (!defining_)
+    throw std::logic_error("checkpoint variable " + name + " declared after data");
+  int dims[2];
+  check(nc_def_dim(id_, (name + "_rows").c_str(), rows, &dims[0]), temporary_, name);
+  check(nc_def_dim(id_, (name + "_columns").c_str(), columns, &dims[1]), temporary_, name);
+  int var = 0;
+  check(nc_def_var(id_, name.c_str(), integer ? NC_INT64 : NC_DOUBLE, 2, dims, &var), temporary_,
+        name);
+}
+
+void CheckpointWriter::endDefinitions() {
+  if (defining_)
+    check(nc_enddef(id_), temporary_, "definitions");
+  defining_ = false;
+}
+
+int CheckpointWriter::variable(const std::string& name) const {
+  int var = 0;
+  check(nc_inq_varid(id_, name.c_str(), &var), temporary_, "variable " + name);
+  return var;
+}
+
+void CheckpointWriter::write(const std::string& name, const std::vector<double>& values) {
+  endDefinitions();
+  const int var = variable(name);
+  int dims[2];
+  std::size_t columns = 0;
+  nc_inq_vardimid(id_, var, dims);
+  nc_inq_dimlen(id_, dims[1], &columns);
+  check(nc_put_var_double(id_, var, values.data()), temporary_, "variable " + name);
+  const unsigned long long sum = checksum(values, columns);
+  check(nc_put_att_ulonglong(id_, var, kChecksum, NC_UINT64, 1, &sum), temporary_, name);
+}
+
+void CheckpointWriter::write(const std::string& name, const std::vector<long long>& values) {
+  endDefinitions();
+  const int var = variable(name);
+  int dims[2];
+  std::size_t columns = 0;
+  nc_inq_vardimid(id_, var, dims);
+  nc_inq_dimlen(id_, dims[1], &columns);
+  check(nc_put_var_longlong(id_, var, values.data()), temporary_, "variable " + name);
+  const unsigned long long sum = checksum(values, columns);
+  check(nc_put_att_ulonglong(id_, var, kChecksum, NC_UINT64, 1, &sum), temporary_, name);
+}
+
+void CheckpointWriter::commit() {
+  check(nc_close(id_), temporary_, "cannot close the checkpoint");
+  id_ = -1;
+  syncFile(temporary_);
+  std::error_code error;
+  std::filesystem::rename(temporary_, path_, error);
+  if (error)
+    throw FileError(path_, "cannot rename " + temporary_ + " into place: " + error.message());
+  syncFile(std::filesystem::path(path_).parent_path().empty()
+               ? "."
+               : std::filesystem::path(path_).parent_path().string());
+}
+
+CheckpointReader::CheckpointReader(const std::string& path) : path_(path) {
+  if (!std::filesystem::is_regular_file(path))
+    throw FileError(path,
+                    std::filesystem::exists(path) ? "is not a file" : "no such checkpoint file");
+  const int status = nc_open(path.c_str(), NC_NOWRITE, &id_);
+  if (status != NC_NOERR) {
+    id_ = -1;
+    throw FileError(path, std::string("is not a readable checkpoint (truncated or not one: ") +
+                              nc_strerror(status) + ")");
+  }
+  nc_type type;
+  std::size_t length = 0;
+  if (nc_inq_att(id_, NC_GLOBAL, kVersion, &type, &length) != NC_NOERR || length != 1 ||
+      nc_get_att_int(id_, NC_GLOBAL, kVersion, &version_) != NC_NOERR)
+    throw FileError(path, "is a netCDF file but not an impm checkpoint (no format version)");
+  if (version_ > kCheckpointVersion || version_ < 1)
+    throw FileError(path, "has checkpoint format version " + std::to_string(version_) +
+                              "; this impm reads format versions up to " +
+                              std::to_string(kCheckpointVersion));
+}
+
+CheckpointReader::~CheckpointReader() {
+  if (id_ >= 0)
+    nc_close(id_);
+}
+
+bool CheckpointReader::has(const std::string& name) const {
+  int var = 0;
+  return nc_inq_varid(id_, name.c_str(), &var) == NC_NOERR;
+}
+
+int CheckpointReader::variable(const std::string& name) const {
+  int var = 0;
+  if (nc_inq_varid(id_, name.c_str(), &var) != NC_NOERR)
+    throw FileError(path_, "has no variable '" + name + "'");
+  return var;
+}
+
+std::string CheckpointReader::text(const std::string& name) const {
+  std::size_t length = 0;
+  nc_type type;
+  if (nc_inq_att(id_, NC_GLOBAL, name.c_str(), &type, &length) != NC_NOERR || type != NC_CHAR)
+    throw FileError(path_, "has no attribute '" + name + "'");
+  std::string value(length, '\0');
+  check(nc_get_att_text(id_, NC_GLOBAL, name.c_str(), value.data()), path_, name);
+  return value;
+}
+
+std::vector<double> CheckpointReader::numbers(const std::string& name) const {
+  std::size_t length = 0;
+  nc_type type;
+  if (nc_inq_att(id_, NC_GLOBAL, name.c_str(), &type, &length) != NC_NOERR || type != NC_DOUBLE)
+    throw FileError(path_, "has no attribute '" + name + "'");
+  std::vector<double> values(length);
+  check(nc_get_att_double(id_, NC_GLOBAL, name.c_str(), values.data()), path_, name);
+  return values;
+}
+
+std::vector<long long> CheckpointReader::integers(const std::string& name) const {
+  std::size_t length = 0;
+  nc_type type;
+  if (nc_inq_att(id_, NC_GLOBAL, name.c_str(), &type, &length) != NC_NOERR || type != NC_INT64)
+    throw FileError(path_, "has no attribute '" + name + "'");
+  std::vector<long long> values(length);
+  check(nc_get_att_longlong(id_, NC_GLOBAL, name.c_str(), values.data()), path_, name);
+  return values;
+}
+
+std::pair<std::size_t, std::size_t> CheckpointReader::shape(const std::string& name) const {
+  const int var = variable(name);
+  int ndims = 0, dims[2];
+  check(nc_inq_varndims(id_, var, &ndims), path_, name);
+  if (ndims != 2)
+    throw FileError(path_, "variable '" + name + "' is not a table");
+  check(nc_inq_vardimid(id_, var, dims), path_, name);
+  std::size_t rows = 0, columns = 0;
+  nc_inq_dimlen(id_, dims[0], &rows);
+  nc_inq_dimlen(id_, dims[1], &columns);
+  return {rows, columns};
+}
+
+void CheckpointReader::account(const std::string& name, std::size_t first, std::size_t count,
+                               std::size_t rowBytes, const void* data) const {
+  auto it = sums_.begin();
+  while (it != sums_.end() && it->first != name)
+    ++it;
+  if (it == sums_.end())
+    it = sums_.insert(sums_.end(), {name, Sum{}});
+  const char* bytes = static_cast<const char*>(data);
+  for (std::size_t r = 0; r < count; ++r)
+    it->second.sum += rowHash(first + r, bytes + r * rowBytes, rowBytes);
+  it->second.rows += count;
+}
+
+std::vector<double> CheckpointReader::rows(const std::string& name, std::size_t first,
+                                           std::size_t count, bool checked) const {
+  const auto [rows, columns] = shape(name);
+  if (first + count > rows)
+    throw FileError(path_, "variable '" + name + "' has " + std::to_string(rows) + " rows, not " +
+                               std::to_string(first + count));
+  std::vector<double> values(count * columns);
+  const std::size_t start[2] = {first, 0}, extent[2] = {count, columns};
+  if (count)
+    check(nc_get_vara_double(id_, variable(name), start, extent, values.data()), path_,
+          "cannot read variable " + name);
+  if (checked)
+    account(name, first, count, columns * sizeof(double), values.data());
+  return values;
+}
+
+std::vector<long long> CheckpointReader::integerRows(const std::string& name, std::size_t first,
+                                                     std::size_t count) const {
+  const auto [rows, columns] = shape(name);
+  if (first + count > rows)
+    throw FileError(path_, "variable '" + name + "' has " + std::to_string(rows) + " rows, not " +
+                               std::to_string(first + count));
+  std::vector<long long> values(count * columns);
+  const std::size_t start[2] = {first, 0}, extent[2] = {count, columns};
+  if (count)
+    check(nc_get_vara_longlong(id_, variable(name), start, extent, values.data()), path_,
+          "cannot read variable " + name);
+  account(name, first, count, columns * sizeof(long long), values.data());
+  return values;
+}
+
+void CheckpointReader::checkSums() const {
+  for (const auto& [name, sum] : sums_) {
+    if (sum.rows != shape(name).first)
+      continue;  // not read whole
+    unsigned long long stored = 0;
+    if (nc_get_att_ulonglong(id_, variable(name), kChecksum, &stored) != NC_NOERR)
+      throw FileError(path_, "variable '" + name + "' has no checksum");
+    if (stored != sum.sum)
+      throw FileError(path_, "variable '" + name + "' is corrupted (its checksum differs)");
+  }
+}
+
+}  // namespace impm
