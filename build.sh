@@ -69,7 +69,7 @@ case "$cmd" in
   test)
     install_missing "${build_packages[@]}" "${test_packages[@]}"
     build
-    ctest --test-dir "$build_dir" --output-on-failure -j "$jobs"
+    ctest --test-dir "$build_dir" --output-on-failure -j "$jobs" --timeout 900
     ;;
   benchmark)
     install_missing "${build_packages[@]}"

@@ -27,6 +27,7 @@ namespace impm {
 template <int Dim, class Space = DefaultExecSpace>
 class Material {
  public:
+  static constexpr int dimension = Dim;
   using ExecutionSpace = Space;  // where the law's kernels run
   using Particles = ParticleSet<Dim, Space>;
   using Scalars = typename Particles::Scalars;

@@ -13,42 +13,26 @@ namespace impm {
 namespace {
 
 template <int Dim>
-struct Entry {
-  std::string model;
-  std::function<Teuchos::ParameterList()> validParameters;
-  std::function<std::shared_ptr<Material<Dim>>(const std::string&, const Teuchos::ParameterList&)>
-      create;
-};
-
-template <class M, int Dim>
-Entry<Dim> entry() {
-  return {M::model(), &M::validParameters,
-          [](const std::string& name, const Teuchos::ParameterList& params) {
-            return std::make_shared<M>(name, params);
-          }};
-}
-
-template <int Dim>
-const std::vector<Entry<Dim>>& registry();
+std::vector<MaterialModel<Dim>>& registry();
 
 // The registration lines: one per model.
 template <>
-const std::vector<Entry<1>>& registry<1>() {
-  static const std::vector<Entry<1>> models = {
-      entry<ElasticLaw1D<LinearLaw>, 1>(),
-      entry<ElasticLaw1D<LinearFiniteLaw>, 1>(),
-      entry<ElasticLaw1D<CubicLaw>, 1>(),
-      entry<ElasticLaw1D<NeoHookeanLaw1D>, 1>(),
-      entry<FormulaLaw1D, 1>(),
+std::vector<MaterialModel<1>>& registry<1>() {
+  static std::vector<MaterialModel<1>> models = {
+      materialModel<ElasticLaw1D<LinearLaw>, 1>(),
+      materialModel<ElasticLaw1D<LinearFiniteLaw>, 1>(),
+      materialModel<ElasticLaw1D<CubicLaw>, 1>(),
+      materialModel<ElasticLaw1D<NeoHookeanLaw1D>, 1>(),
+      materialModel<FormulaLaw1D, 1>(),
   };
   return models;
 }
 
 template <>
-const std::vector<Entry<2>>& registry<2>() {
-  static const std::vector<Entry<2>> models = {
-      entry<PlaneStrainLaw<LinearElasticLaw>, 2>(),
-      entry<PlaneStrainLaw<NeoHookeanLaw>, 2>(),
+std::vector<MaterialModel<2>>& registry<2>() {
+  static std::vector<MaterialModel<2>> models = {
+      materialModel<PlaneStrainLaw<LinearElasticLaw>, 2>(),
+      materialModel<PlaneStrainLaw<NeoHookeanLaw>, 2>(),
   };
   return models;
 }
@@ -63,6 +47,14 @@ void addVariants(Teuchos::ParameterList& valid, std::vector<std::string>& models
 }
 
 }  // namespace
+
+template <int Dim>
+void registerMaterialModel(const MaterialModel<Dim>& model) {
+  for (const auto& e : registry<Dim>())
+    if (e.model == model.model)
+      throw std::invalid_argument("material model '" + model.model + "' is registered twice");
+  registry<Dim>().push_back(model);
+}
 
 template <int Dim>
 std::vector<std::string> materialModels() {
@@ -97,6 +89,8 @@ std::shared_ptr<Material<Dim>> createMaterial(const std::string& name,
                        "-D model, and this deck's grid is " + std::to_string(Dim) + "-D");
 }
 
+template void registerMaterialModel<1>(const MaterialModel<1>&);
+template void registerMaterialModel<2>(const MaterialModel<2>&);
 template std::vector<std::string> materialModels<1>();
 template std::vector<std::string> materialModels<2>();
 template std::shared_ptr<Material<1>> createMaterial<1>(const std::string&,
