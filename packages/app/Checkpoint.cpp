@@ -52,12 +52,6 @@ std::string listed(const std::vector<T>& v) {
   return s.str() + "}";
 }
 
-// A map with every index 0..n-1 on rank 0 and nothing elsewhere.
-Teuchos::RCP<const Map> rootMap(GlobalId n, const Teuchos::RCP<const Comm>& comm) {
-  const std::size_t local = comm->getRank() == 0 ? static_cast<std::size_t>(n) : 0;
-  return Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(n), local, 0, comm));
-}
-
 void writeIdentity(CheckpointWriter& file, const RunIdentity& id) {
   file.attribute("grid_cells", id.cells);
   file.attribute("grid_origin", id.origin);
@@ -142,43 +136,76 @@ RunIdentity runIdentity(const Teuchos::ParameterList& deck, const GridGeometry<D
   return id;
 }
 
+namespace {
+
+// Runs f on rank 0; every rank learns of its failure (a full disk).  Collective.
+void onRoot(const Comm& comm, const std::function<void()>& f) {
+  collectively(comm, [&] {
+    if (comm.getRank() == 0)
+      f();
+  });
+}
+
+// Rows (unknown, u, v, a) of a fixed grid's nodal state, gathered to rank 0 and sorted by
+// unknown, so that the file does not depend on the ranks.  Collective.
+std::vector<double> gatherNodalState(const StepperState& s, const Comm& comm) {
+  std::vector<std::array<double, 4>> rows;
+  for (std::size_t k = 0; k < s.nodalDofs.size(); ++k)
+    rows.push_back({static_cast<double>(s.nodalDofs[k]), s.nodalU[k], s.nodalV[k], s.nodalA[k]});
+  int count = static_cast<int>(4 * rows.size());
+  std::vector<int> counts(comm.getSize()), offsets(comm.getSize(), 0);
+  const MPI_Comm mpi = rawComm(comm);
+  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, mpi);
+  for (int r = 1; r < comm.getSize(); ++r)
+    offsets[r] = offsets[r - 1] + counts[r - 1];
+  std::vector<std::array<double, 4>> all(comm.getRank() == 0 ? (offsets.back() + counts.back()) / 4
+                                                             : 0);
+  MPI_Gatherv(rows.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE,
+              0, mpi);
+  std::sort(all.begin(), all.end());
+  std::vector<double> flat;
+  for (const auto& row : all)
+    flat.insert(flat.end(), row.begin(), row.end());
+  return flat;
+}
+
+// A vector's values on rank 0 (`target`: every index there), row-major (row: global
+// index); `import` from its map to target, or null to make one.  Collective.
+std::vector<double> gatherRows(const MultiVector& v, const Import* import,
+                               const Teuchos::RCP<const Map>& target) {
+  MultiVector all(target, v.getNumVectors());
+  if (import)
+    all.doImport(v, *import, Tpetra::INSERT);
+  else
+    all.doImport(v, Import(v.getMap(), target), Tpetra::INSERT);
+  const std::size_t width = v.getNumVectors();
+  std::vector<double> values(all.getLocalLength() * width);
+  for (std::size_t c = 0; c < width; ++c) {
+    auto data = all.getData(c);
+    for (std::size_t i = 0; i < all.getLocalLength(); ++i)
+      values[i * width + c] = data[i];
+  }
+  return values;
+}
+
+}  // namespace
+
 template <int Dim>
 void writeCheckpoint(const std::string& path, const RunIdentity& identity,
                      const ParticleSet<Dim>& particles, GlobalId totalParticles,
                      const RunState<Dim>& state, const MultiVector& gridFields) {
   const auto& comm = gridFields.getMap()->getComm();
-  const bool root = comm->getRank() == 0;
-  std::unique_ptr<CheckpointWriter> file;
   const auto& s = state.stepper;
-  // Rank 0 writes; every rank learns of a failure (a full disk) at the end.
-  const auto onRoot = [&](const std::function<void()>& f) {
-    collectively(*comm, [&] {
-      if (root)
-        f();
-    });
-  };
-  // The fixed grid's nodal state (unknown, u, v, a), gathered to rank 0.
-  std::vector<double> nodal;
-  for (std::size_t k = 0; k < s.nodalDofs.size(); ++k)
-    nodal.insert(nodal.end(),
-                 {static_cast<double>(s.nodalDofs[k]), s.nodalU[k], s.nodalV[k], s.nodalA[k]});
-  int count = static_cast<int>(nodal.size()), total = 0;
-  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, count, Teuchos::outArg(total));
-  std::vector<int> counts(comm->getSize());
-  const MPI_Comm mpi = rawComm(*comm);
-  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, mpi);
-  std::vector<int> offsets(comm->getSize(), 0);
-  for (int r = 1; r < comm->getSize(); ++r)
-    offsets[r] = offsets[r - 1] + counts[r - 1];
-  std::vector<double> allNodal(root ? total : 0);
-  MPI_Gatherv(nodal.data(), count, MPI_DOUBLE, allNodal.data(), counts.data(), offsets.data(),
-              MPI_DOUBLE, 0, mpi);
-  onRoot([&] {
+  const auto nodal = gatherNodalState(s, *comm);
+  std::unique_ptr<CheckpointWriter> file;
+  onRoot(*comm, [&] {
     file = std::make_unique<CheckpointWriter>(path);
     writeIdentity(*file, identity);
     file->attribute(
         "step", std::vector<long long>{s.step, s.attempts, s.started ? 1 : 0, state.exodusSteps});
     file->attribute("time", std::vector<double>{s.time, s.loadFactor, s.size, s.bodyWork});
+    file->attribute("contributions",
+                    std::vector<long long>{static_cast<long long>(state.contributions.size())});
     for (std::size_t c = 0; c < state.contributions.size(); ++c)
       file->attribute("contribution_" + std::to_string(c), state.contributions[c]);
     particles.forEachField([&](const FieldSpec& spec, const auto& view) {
@@ -187,7 +214,7 @@ void writeCheckpoint(const std::string& path, const RunIdentity& identity,
                       std::is_integral_v<typename std::decay_t<decltype(view)>::value_type>);
     });
     file->declare("grid_fields", gridFields.getGlobalLength(), gridFields.getNumVectors(), false);
-    file->declare("nodal_state", total / 4, 4, false);
+    file->declare("nodal_state", nodal.size() / 4, 4, false);
   });
   // Particle fields, one at a time: gathered to rank 0 by id.
   const auto host = particles.mirror(Kokkos::DefaultHostExecutionSpace());
@@ -200,20 +227,14 @@ void writeCheckpoint(const std::string& path, const RunIdentity& identity,
     if (!spec.checkpoint)
       return;
     const int width = fieldWidth(view);
-    MultiVector local(source, width), all(target, width);
+    MultiVector local(source, width);
     for (int c = 0; c < width; ++c) {
       auto data = local.getDataNonConst(c);
       for (std::size_t p = 0; p < particles.size(); ++p)
         data[p] = fieldComponent(view, p, c);
     }
-    all.doImport(local, gather, Tpetra::INSERT);
-    onRoot([&] {
-      std::vector<double> values(totalParticles * width);
-      for (int c = 0; c < width; ++c) {
-        auto data = all.getData(c);
-        for (GlobalId p = 0; p < totalParticles; ++p)
-          values[p * width + c] = data[p];
-      }
+    const auto values = gatherRows(local, &gather, target);
+    onRoot(*comm, [&] {
       using Value = typename std::decay_t<decltype(view)>::value_type;
       if constexpr (std::is_integral_v<Value>)
         file->write(particleVariable(spec.name),
@@ -222,27 +243,61 @@ void writeCheckpoint(const std::string& path, const RunIdentity& identity,
         file->write(particleVariable(spec.name), values);
     });
   });
-  // The grid's output fields.
-  const auto nodes = rootMap(static_cast<GlobalId>(gridFields.getGlobalLength()), comm);
-  MultiVector grid(nodes, gridFields.getNumVectors());
-  grid.doImport(gridFields, Import(gridFields.getMap(), nodes), Tpetra::INSERT);
-  onRoot([&] {
-    std::vector<double> values(grid.getLocalLength() * grid.getNumVectors());
-    for (std::size_t c = 0; c < grid.getNumVectors(); ++c) {
-      auto data = grid.getData(c);
-      for (std::size_t i = 0; i < grid.getLocalLength(); ++i)
-        values[i * grid.getNumVectors() + c] = data[i];
-    }
-    file->write("grid_fields", values);
-    // Sorted by unknown, so that the file does not depend on the ranks.
-    std::vector<std::array<double, 4>> rows(allNodal.size() / 4);
-    std::memcpy(rows.data(), allNodal.data(), allNodal.size() * sizeof(double));
-    std::sort(rows.begin(), rows.end());
-    std::memcpy(allNodal.data(), rows.data(), allNodal.size() * sizeof(double));
-    file->write("nodal_state", allNodal);
+  const auto grid = gatherRows(gridFields, nullptr, rootMap(gridFields.getGlobalLength(), comm));
+  onRoot(*comm, [&] {
+    file->write("grid_fields", grid);
+    file->write("nodal_state", nodal);
     file->commit();
   });
 }
+
+namespace {
+
+template <int Dim>
+void readStepperState(const CheckpointReader& file, RunState<Dim>& state) {
+  const auto steps = file.integers("step");
+  const auto times = file.numbers("time");
+  const auto contributions = file.integers("contributions");
+  if (steps.size() != 4 || times.size() != 4 || contributions.size() != 1)
+    throw FileError(file.path(), "has a malformed stepper state");
+  auto& s = state.stepper;
+  s.step = static_cast<int>(steps[0]), s.attempts = static_cast<int>(steps[1]);
+  s.started = steps[2] != 0, state.exodusSteps = static_cast<int>(steps[3]);
+  s.time = times[0], s.loadFactor = times[1], s.size = times[2], s.bodyWork = times[3];
+  for (long long c = 0; c < contributions[0]; ++c)
+    state.contributions.push_back(file.numbers("contribution_" + std::to_string(c)));
+  const auto nodal = file.rows("nodal_state", 0, file.shape("nodal_state").first);
+  for (std::size_t k = 0; k + 3 < nodal.size(); k += 4) {
+    s.nodalDofs.push_back(static_cast<GO>(nodal[k]));
+    s.nodalU.push_back(nodal[k + 1]), s.nodalV.push_back(nodal[k + 2]);
+    s.nodalA.push_back(nodal[k + 3]);
+  }
+}
+
+// Rows `keep` (ascending) of a particle variable, read in chunks, into field `view`.
+template <class View>
+void readParticleField(const CheckpointReader& file, const std::string& name, std::size_t total,
+                       const std::vector<std::size_t>& keep, const View& view) {
+  const int width = fieldWidth(view);
+  if (file.shape(name) != std::make_pair(total, static_cast<std::size_t>(width)))
+    throw FileError(file.path(), "variable '" + name + "' has the wrong shape");
+  std::size_t next = 0;  // index into keep
+  for (std::size_t first = 0; first < total; first += kChunk) {
+    const std::size_t count = std::min(kChunk, total - first);
+    std::vector<double> values;
+    if constexpr (std::is_integral_v<typename View::non_const_value_type>) {
+      const auto integers = file.integerRows(name, first, count);
+      values.assign(integers.begin(), integers.end());
+    } else {
+      values = file.rows(name, first, count);
+    }
+    for (; next < keep.size() && keep[next] < first + count; ++next)
+      for (int c = 0; c < width; ++c)
+        setFieldComponent(view, next, c, values[(keep[next] - first) * width + c]);
+  }
+}
+
+}  // namespace
 
 template <int Dim>
 RunState<Dim> readCheckpoint(const std::string& path, const RunIdentity& identity,
@@ -255,65 +310,26 @@ RunState<Dim> readCheckpoint(const std::string& path, const RunIdentity& identit
     const std::string difference = identityDifference(file, identity);
     if (!difference.empty())
       throw FileError(path, difference);
-    const auto steps = file.integers("step");
-    const auto times = file.numbers("time");
-    if (steps.size() != 4 || times.size() != 4)
-      throw FileError(path, "has a malformed stepper state");
-    auto& s = state.stepper;
-    s.step = static_cast<int>(steps[0]), s.attempts = static_cast<int>(steps[1]);
-    s.started = steps[2] != 0, state.exodusSteps = static_cast<int>(steps[3]);
-    s.time = times[0], s.loadFactor = times[1], s.size = times[2], s.bodyWork = times[3];
-    for (int c = 0;; ++c) {
-      try {
-        state.contributions.push_back(file.numbers("contribution_" + std::to_string(c)));
-      } catch (const FileError&) {
-        break;
-      }
-    }
-    const auto nodal = file.rows("nodal_state", 0, file.shape("nodal_state").first);
-    for (std::size_t k = 0; k + 3 < nodal.size(); k += 4) {
-      s.nodalDofs.push_back(static_cast<GO>(nodal[k]));
-      s.nodalU.push_back(nodal[k + 1]), s.nodalV.push_back(nodal[k + 2]);
-      s.nodalA.push_back(nodal[k + 3]);
-    }
-    // The particles, in chunks of ids: each rank keeps those in its cells.
+    readStepperState(file, state);
+    // Each rank keeps the particles in its cells, in id order.
     const auto total = static_cast<std::size_t>(identity.particles);
     const std::string place = particleVariable(byReference ? "X" : "x");
-    std::vector<std::size_t> keep;  // rows kept, ascending
+    std::vector<std::size_t> keep;
     for (std::size_t first = 0; first < total; first += kChunk) {
       const std::size_t count = std::min(kChunk, total - first);
-      const auto x = file.rows(place, first, count, false);
+      const auto x = file.rows(place, first, count, false);  // checked when read as a field
       for (std::size_t r = 0; r < count; ++r)
         if (decomposition.ownerOfPoint(&x[r * Dim]) == comm->getRank())
           keep.push_back(first + r);
     }
-    ParticleSet<Dim, Kokkos::DefaultHostExecutionSpace> host =
-        particles.mirror(Kokkos::DefaultHostExecutionSpace());
+    auto host = particles.mirror(Kokkos::DefaultHostExecutionSpace());
     host.resize(keep.size());
     host.forEachField([&](const FieldSpec& spec, auto& view) {
       if (!spec.checkpoint)
         return;
-      const std::string name = particleVariable(spec.name);
-      if (!file.has(name))
+      if (!file.has(particleVariable(spec.name)))
         throw FileError(path, "has no particle field '" + spec.name + "'");
-      const int width = fieldWidth(view);
-      if (file.shape(name) != std::make_pair(total, static_cast<std::size_t>(width)))
-        throw FileError(path, "particle field '" + spec.name + "' has the wrong shape");
-      std::size_t next = 0;  // index into keep
-      for (std::size_t first = 0; first < total; first += kChunk) {
-        const std::size_t count = std::min(kChunk, total - first);
-        using Value = typename std::decay_t<decltype(view)>::non_const_value_type;
-        std::vector<double> values;
-        if constexpr (std::is_integral_v<Value>) {
-          const auto integers = file.integerRows(name, first, count);
-          values.assign(integers.begin(), integers.end());
-        } else {
-          values = file.rows(name, first, count);
-        }
-        for (; next < keep.size() && keep[next] < first + count; ++next)
-          for (int c = 0; c < width; ++c)
-            setFieldComponent(view, next, c, values[(keep[next] - first) * width + c]);
-      }
+      readParticleField(file, particleVariable(spec.name), total, keep, view);
     });
     const auto [rows, columns] = file.shape("grid_fields");
     if (rows != gridFields.getGlobalLength() || columns != gridFields.getNumVectors())

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "core/Collective.hpp"
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
 
@@ -33,8 +34,8 @@ Teuchos::ParameterList outputValidParameters() {
                      "those the materials declare");
   declareBool(valid, "Timers", false,
               "Print the wall-clock time of each phase (set-up, particle-grid map, graph, "
-              "residual, Jacobian, Newton solve, particle update, migration, output) at the end, "
-              "over all ranks");
+              "residual, Jacobian, Newton solve, particle update, migration, output, checkpoint, "
+              "checkpoint read) at the end, over all ranks");
   return valid;
 }
 
@@ -78,12 +79,6 @@ std::vector<TableColumn> outputColumns(const ParticleSet<Dim>& particles,
 }
 
 namespace {
-
-// A map with every index 0..n-1 on rank 0 and nothing elsewhere.
-Teuchos::RCP<const Map> rootMap(GlobalId n, const Teuchos::RCP<const Comm>& comm) {
-  const std::size_t local = comm->getRank() == 0 ? static_cast<std::size_t>(n) : 0;
-  return Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(n), local, 0, comm));
-}
 
 std::vector<std::vector<double>> columnsOf(const MultiVector& mv, std::size_t count) {
   std::vector<std::vector<double>> out(count);

@@ -149,6 +149,7 @@ void Simulation<Dim>::addDerivedFields() {
 
 template <int Dim>
 void Simulation<Dim>::restart(const std::string& file) {
+  IMPM_TIMER("checkpoint read");
   // The particles the deck makes identified the problem; the checkpoint's replace them.
   particles_ = ParticleSet<Dim>();
   declareMaterialVariables(particles_, materials_);
@@ -253,13 +254,7 @@ void Simulation<Dim>::printProgress(const StepRecord& r, const std::vector<doubl
 }
 
 template <int Dim>
-std::vector<std::string> Simulation<Dim>::run() {
-  printHeader();
-  const auto& timeIntegration = deck_.sublist("Time Integration");
-  const bool dynamic = !isStatic(timeIntegration);
-  History<Dim> history(bodies_->columnNames());
-  auto& grid = *gridFields_;
-  std::unique_ptr<Output<Dim>> output;
+std::unique_ptr<Output<Dim>> Simulation<Dim>::startOutput(const History<Dim>& history) {
   using Domains = typename Output<Dim>::Domains;
   const Domains domains = method_ == Method::cpdi   ? Domains::parallelogram
                           : method_ == Method::gimp ? Domains::box
@@ -267,22 +262,27 @@ std::vector<std::string> Simulation<Dim>::run() {
   particles_.updateDerived();
   const OutputResume resume{restored_ ? restored_->stepper.step : 0,
                             restored_ ? restored_->exodusSteps : 0};
+  std::unique_ptr<Output<Dim>> output;
   collectively(*comm_, [&] {
     output = std::make_unique<Output<Dim>>(
         deck_.sublist("Output"), outputDirectory_, prefix_, *ownership_, particles_,
-        totalParticles_, history.columns(), grid.names(), std::vector<std::string>{"F0", "FL"},
-        domains, restored_ ? &resume : nullptr);
+        totalParticles_, history.columns(), gridFields_->names(),
+        std::vector<std::string>{"F0", "FL"}, domains, restored_ ? &resume : nullptr);
   });
-  if (!restored_) {
-    StepRecord initial;
-    initial.kineticEnergy = kineticEnergy<Dim>(particles_, *comm_);
-    initial.strainEnergy = strainEnergy<Dim>(particles_, materials_, *comm_);
-    initial.loadFactor = dynamic ? 1.0 : 0.0;
-    const auto F0 = reactions();
-    output->appendHistory(history.row(initial, F0[0], F0[1], particles_, *comm_));
-    collectively(*comm_, [&] { output->writeFields(0.0, particles_, grid.values(), F0); });
-  }
+  if (restored_)
+    return output;  // the initial state is in the files already
+  StepRecord initial;
+  initial.kineticEnergy = kineticEnergy<Dim>(particles_, *comm_);
+  initial.strainEnergy = strainEnergy<Dim>(particles_, materials_, *comm_);
+  initial.loadFactor = isStatic(deck_.sublist("Time Integration")) ? 0.0 : 1.0;
+  const auto F0 = reactions();
+  output->appendHistory(history.row(initial, F0[0], F0[1], particles_, *comm_));
+  collectively(*comm_, [&] { output->writeFields(0.0, particles_, gridFields_->values(), F0); });
+  return output;
+}
 
+template <int Dim>
+std::unique_ptr<Stepper<Dim>> Simulation<Dim>::makeStepper() {
   StepperSetup<Dim> setup{
       *ownership_,
       method_,
@@ -293,29 +293,40 @@ std::vector<std::string> Simulation<Dim>::run() {
       *newton_,
       [this](double t) { bodies_->applyLoads(particles_, t); },
       [this](const double* x, double* u, double* v) { bodies_->initialNodalState(x, u, v); }};
+  const auto& timeIntegration = deck_.sublist("Time Integration");
   std::unique_ptr<Stepper<Dim>> stepper;
-  if (dynamic)
-    stepper = std::make_unique<DynamicStepper<Dim>>(dynamicSettings(timeIntegration), setup);
-  else
+  if (isStatic(timeIntegration))
     stepper = std::make_unique<QuasiStaticStepper<Dim>>(timeIntegration, setup);
+  else
+    stepper = std::make_unique<DynamicStepper<Dim>>(dynamicSettings(timeIntegration), setup);
   if (restored_)
     stepper->restore(restored_->stepper);
-  CheckpointSeries series(deck_.sublist("Output"), outputDirectory_, prefix_);
+  return stepper;
+}
+
+template <int Dim>
+std::vector<std::string> Simulation<Dim>::run() {
+  printHeader();
+  History<Dim> history(bodies_->columnNames());
+  const auto output = startOutput(history);
+  const auto stepper = makeStepper();
+  CheckpointSeries checkpoints(deck_.sublist("Output"), outputDirectory_, prefix_);
   double finalTime = stepper->state().time;
   const StepCallback<Dim> onStep = [&](const StepRecord& r, const StepGrid<Dim>& step) {
-    grid.update(step);
+    gridFields_->update(step);
     const auto F = reactions();
     output->appendHistory(history.row(r, F[0], F[1], particles_, *comm_));
     printProgress(r, F);
     if (output->due(r.step) || r.last) {
       IMPM_TIMER("output");
       particles_.updateDerived();  // output-only fields
-      collectively(*comm_, [&] { output->writeFields(r.time, particles_, grid.values(), F); });
+      collectively(*comm_,
+                   [&] { output->writeFields(r.time, particles_, gridFields_->values(), F); });
     }
-    if (series.due(r.step, r.last)) {
-      writeCheckpoint(series, r.step, *stepper, *output);
+    if (checkpoints.due(r.step, r.last)) {
+      writeCheckpoint(checkpoints, r.step, *stepper, *output);
       if (comm_->getRank() == 0)
-        series.written(r.step);
+        checkpoints.written(r.step);
     }
     finalTime = r.time;
   };

@@ -12,6 +12,7 @@
 #include "app/Bodies.hpp"
 #include "app/Checkpoint.hpp"
 #include "app/GridFields.hpp"
+#include "app/History.hpp"
 #include "app/Output.hpp"
 #include "app/Verification.hpp"
 #include "assembly/Kinematics.hpp"
@@ -45,6 +46,9 @@ class Simulation {
   void addDerivedFields();
   void writeCheckpoint(const CheckpointSeries& series, int step, const Stepper<Dim>& stepper,
                        const Output<Dim>& output) const;
+  // The output files (continued on a restart) with the initial state written (not on one).
+  std::unique_ptr<Output<Dim>> startOutput(const History<Dim>& history);
+  std::unique_ptr<Stepper<Dim>> makeStepper();
   void checkExplicitTimeStep() const;
   std::vector<double> reactions() const;
   void printHeader() const;

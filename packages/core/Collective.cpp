@@ -57,4 +57,9 @@ void collectively(const Comm& comm, const std::function<void()>& phase) {
   throw std::runtime_error(message);
 }
 
+Teuchos::RCP<const Map> rootMap(GlobalId n, const Teuchos::RCP<const Comm>& comm) {
+  const std::size_t local = comm->getRank() == 0 ? static_cast<std::size_t>(n) : 0;
+  return Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(n), local, 0, comm));
+}
+
 }  // namespace impm

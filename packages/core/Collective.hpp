@@ -7,9 +7,14 @@
 #include <functional>
 
 #include "core/TpetraTypes.hpp"
+#include "core/Types.hpp"
 
 namespace impm {
 
 void collectively(const Comm& comm, const std::function<void()>& phase);
+
+// A map with every index 0..n-1 on rank 0 and none elsewhere: the target of an Import that
+// gathers a distributed vector to the rank that writes a file.
+Teuchos::RCP<const Map> rootMap(GlobalId n, const Teuchos::RCP<const Comm>& comm);
 
 }  // namespace impm

@@ -109,28 +109,42 @@ int CheckpointWriter::variable(const std::string& name) const {
   return var;
 }
 
-void CheckpointWriter::write(const std::string& name, const std::vector<double>& values) {
+namespace {
+
+int put(int id, int var, const std::vector<double>& v) {
+  return nc_put_var_double(id, var, v.data());
+}
+int put(int id, int var, const std::vector<long long>& v) {
+  return nc_put_var_longlong(id, var, v.data());
+}
+int get(int id, int var, const std::size_t* start, const std::size_t* count, double* v) {
+  return nc_get_vara_double(id, var, start, count, v);
+}
+int get(int id, int var, const std::size_t* start, const std::size_t* count, long long* v) {
+  return nc_get_vara_longlong(id, var, start, count, v);
+}
+
+}  // namespace
+
+template <class T>
+void CheckpointWriter::writeValues(const std::string& name, const std::vector<T>& values) {
   endDefinitions();
   const int var = variable(name);
   int dims[2];
   std::size_t columns = 0;
   nc_inq_vardimid(id_, var, dims);
   nc_inq_dimlen(id_, dims[1], &columns);
-  check(nc_put_var_double(id_, var, values.data()), temporary_, "variable " + name);
+  check(put(id_, var, values), temporary_, "variable " + name);
   const unsigned long long sum = checksum(values, columns);
   check(nc_put_att_ulonglong(id_, var, kChecksum, NC_UINT64, 1, &sum), temporary_, name);
 }
 
+void CheckpointWriter::write(const std::string& name, const std::vector<double>& values) {
+  writeValues(name, values);
+}
+
 void CheckpointWriter::write(const std::string& name, const std::vector<long long>& values) {
-  endDefinitions();
-  const int var = variable(name);
-  int dims[2];
-  std::size_t columns = 0;
-  nc_inq_vardimid(id_, var, dims);
-  nc_inq_dimlen(id_, dims[1], &columns);
-  check(nc_put_var_longlong(id_, var, values.data()), temporary_, "variable " + name);
-  const unsigned long long sum = checksum(values, columns);
-  check(nc_put_att_ulonglong(id_, var, kChecksum, NC_UINT64, 1, &sum), temporary_, name);
+  writeValues(name, values);
 }
 
 void CheckpointWriter::commit() {
@@ -240,35 +254,31 @@ void CheckpointReader::account(const std::string& name, std::size_t first, std::
   it->second.rows += count;
 }
 
-std::vector<double> CheckpointReader::rows(const std::string& name, std::size_t first,
-                                           std::size_t count, bool checked) const {
+template <class T>
+std::vector<T> CheckpointReader::readRows(const std::string& name, std::size_t first,
+                                          std::size_t count, bool checked) const {
   const auto [rows, columns] = shape(name);
   if (first + count > rows)
     throw FileError(path_, "variable '" + name + "' has " + std::to_string(rows) + " rows, not " +
                                std::to_string(first + count));
-  std::vector<double> values(count * columns);
+  std::vector<T> values(count * columns);
   const std::size_t start[2] = {first, 0}, extent[2] = {count, columns};
   if (count)
-    check(nc_get_vara_double(id_, variable(name), start, extent, values.data()), path_,
+    check(get(id_, variable(name), start, extent, values.data()), path_,
           "cannot read variable " + name);
   if (checked)
-    account(name, first, count, columns * sizeof(double), values.data());
+    account(name, first, count, columns * sizeof(T), values.data());
   return values;
+}
+
+std::vector<double> CheckpointReader::rows(const std::string& name, std::size_t first,
+                                           std::size_t count, bool checked) const {
+  return readRows<double>(name, first, count, checked);
 }
 
 std::vector<long long> CheckpointReader::integerRows(const std::string& name, std::size_t first,
                                                      std::size_t count) const {
-  const auto [rows, columns] = shape(name);
-  if (first + count > rows)
-    throw FileError(path_, "variable '" + name + "' has " + std::to_string(rows) + " rows, not " +
-                               std::to_string(first + count));
-  std::vector<long long> values(count * columns);
-  const std::size_t start[2] = {first, 0}, extent[2] = {count, columns};
-  if (count)
-    check(nc_get_vara_longlong(id_, variable(name), start, extent, values.data()), path_,
-          "cannot read variable " + name);
-  account(name, first, count, columns * sizeof(long long), values.data());
-  return values;
+  return readRows<long long>(name, first, count, true);
 }
 
 void CheckpointReader::checkSums() const {

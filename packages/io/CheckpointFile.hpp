@@ -40,6 +40,8 @@ class CheckpointWriter {
  private:
   int variable(const std::string& name) const;
   void endDefinitions();
+  template <class T>
+  void writeValues(const std::string& name, const std::vector<T>& values);
   std::string path_, temporary_;
   int id_ = -1;
   bool defining_ = true;
@@ -73,6 +75,9 @@ class CheckpointReader {
 
  private:
   int variable(const std::string& name) const;
+  template <class T>
+  std::vector<T> readRows(const std::string& name, std::size_t first, std::size_t count,
+                          bool checked) const;
   void account(const std::string& name, std::size_t first, std::size_t count, std::size_t rowBytes,
                const void* data) const;
   struct Sum {

@@ -229,8 +229,34 @@ void DynamicStepper<Dim>::gridToParticles(GridSystem<Dim>& system, const Vector&
 }
 
 template <int Dim>
+void DynamicStepper<Dim>::integrate(const GridSystem<Dim>& system, const Acceleration& s, double h,
+                                    const Vector& du, const Vector& v, const Vector& a,
+                                    Teuchos::RCP<Vector>& vNew, Teuchos::RCP<Vector>& aNew) const {
+  aNew = Teuchos::rcp(new Vector(system.unknownMap()));
+  aNew->update(s.c0, du, -s.rv, v, 0.0);
+  aNew->update(-s.ra, a, 1.0);
+  maskExtras(*aNew, system.nodalMask());
+  vNew = Teuchos::rcp(new Vector(v, Teuchos::Copy));
+  if (settings_.isExplicit())
+    vNew->update(h, *aNew, 1.0);
+  else
+    vNew->update(h * (1 - settings_.gamma), a, h * settings_.gamma, *aNew, 1.0);
+}
+
+template <int Dim>
+double DynamicStepper<Dim>::conservedKineticEnergy(const Vector& mass, const Vector& v) const {
+  // On a fixed grid with lumped mass the nodal 1/2 v^T M v; otherwise the particles' (equal
+  // to it with the consistent mass).
+  if (fixedGrid_ && settings_.mass == MassType::lumped) {
+    Vector mv(v.getMap());
+    mv.elementWiseMultiply(1.0, mass, v, 0.0);
+    return 0.5 * mv.dot(v);
+  }
+  return kineticEnergy<Dim>(this->setup_.particles, *this->setup_.ownership.comm());
+}
+
+template <int Dim>
 void DynamicStepper<Dim>::run(const StepCallback<Dim>& onStep) {
-  const Comm& comm = *this->setup_.ownership.comm();
   auto& state = this->state_;
   const double T = settings_.finalTime;
   const auto done = [&] { return state.time >= T - 1e-9 * settings_.timeStep; };
@@ -265,16 +291,8 @@ void DynamicStepper<Dim>::run(const StepCallback<Dim>& onStep) {
           "step " + std::to_string(state.step + 1), "time step", "Minimum Time Step", report);
       continue;
     }
-    // The integrator's accelerations and the new velocities.
-    auto aNew = Teuchos::rcp(new Vector(system->unknownMap()));
-    aNew->update(s.c0, *du, -s.rv, *v, 0.0);
-    aNew->update(-s.ra, *a, 1.0);
-    maskExtras(*aNew, system->nodalMask());
-    auto vNew = Teuchos::rcp(new Vector(*v, Teuchos::Copy));
-    if (settings_.isExplicit())
-      vNew->update(h, *aNew, 1.0);
-    else
-      vNew->update(h * (1 - settings_.gamma), *a, h * settings_.gamma, *aNew, 1.0);
+    Teuchos::RCP<Vector> vNew, aNew;
+    integrate(*system, s, h, *du, *v, *a, vNew, aNew);
     // 3. Grid to particles.
     gridToParticles(*system, *du, *v, *vNew, *aNew);
     // 4. Accept.
@@ -284,15 +302,7 @@ void DynamicStepper<Dim>::run(const StepCallback<Dim>& onStep) {
     record.dt = h;
     record.last = done();
     record.newton = report;
-    // The energy the integrator conserves: on a fixed grid with lumped mass the nodal
-    // 1/2 v^T M v; otherwise the particles' (equal to it with the consistent mass).
-    if (fixedGrid_ && settings_.mass == MassType::lumped) {
-      Vector mv(system->unknownMap());
-      mv.elementWiseMultiply(1.0, *mass, *vNew, 0.0);
-      record.kineticEnergy = 0.5 * mv.dot(*vNew);
-    } else {
-      record.kineticEnergy = kineticEnergy<Dim>(this->setup_.particles, comm);
-    }
+    record.kineticEnergy = conservedKineticEnergy(*mass, *vNew);
     if (fixedGrid_) {
       u_->update(1.0, *du, 1.0);
       v_ = vNew, a_ = aNew;

@@ -67,6 +67,12 @@ class DynamicStepper : public Stepper<Dim> {
   Teuchos::RCP<Vector> equilibriumAcceleration(GridSystem<Dim>& system, const Vector& v, double dt);
   bool solveStep(GridSystem<Dim>& system, const Acceleration& s, const Vector& v, const Vector& a,
                  double dt, Teuchos::RCP<Vector>& du, NewtonReport& report);
+  // The integrator's new grid acceleration and velocity after a step du of size h.
+  void integrate(const GridSystem<Dim>& system, const Acceleration& s, double h, const Vector& du,
+                 const Vector& v, const Vector& a, Teuchos::RCP<Vector>& vNew,
+                 Teuchos::RCP<Vector>& aNew) const;
+  // The kinetic energy the integrator conserves, at the new grid velocity v.
+  double conservedKineticEnergy(const Vector& mass, const Vector& v) const;
   // 3 of a dynamic step: particles, then their velocities (FLIP/PIC) from v, vNew, aNew.
   void gridToParticles(GridSystem<Dim>& system, const Vector& du, const Vector& v,
                        const Vector& vNew, const Vector& aNew);

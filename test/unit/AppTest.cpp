@@ -174,5 +174,30 @@ TEST(Output, ParticlesAreGatheredSortedById) {
   }
 }
 
+// Output/Fields selects registry fields: id always, then the named fields' columns in the
+// registry's order; a misspelt name is refused with a suggestion.
+TEST(Output, FieldsAreSelectedFromTheRegistry) {
+  ParticleSet<2> ps(1);
+  FieldSpec eqps;
+  eqps.name = "eqps", eqps.columns = defaultColumns<2>("eqps", FieldShape::scalar);
+  ps.declare(eqps);
+  std::vector<std::string> names;
+  for (const auto& c : outputColumns(ps, {"eqps", "v", "stress"}))
+    names.push_back(c.csv + "/" + c.exodus);
+  EXPECT_EQ(names, (std::vector<std::string>{"id/", "stress_xx/stress_xx", "stress_yy/stress_yy",
+                                             "stress_xy/stress_xy", "v_x/velocityX",
+                                             "v_y/velocityY", "eqps/eqps"}));
+  EXPECT_EQ(outputColumns(ps).back().csv, "eqps");  // every output field, the declared last
+  try {
+    outputColumns(ps, {"stres"});
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.path(), "Output/Fields");
+    EXPECT_NE(std::string(e.what()).find("'stres' is not an output field (did you mean 'stress'?)"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace impm
