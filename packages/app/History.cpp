@@ -17,6 +17,7 @@ History<Dim>::History(const std::vector<std::string>& bodyNames) : bodies_(bodyN
               "FL",
               "kinetic_energy",
               "strain_energy",
+              "dissipation",
               "total_energy",
               "external_work",
               "energy_balance",
@@ -64,7 +65,7 @@ std::vector<double> History<Dim>::row(const StepRecord& r, double F0, double FL,
   for (std::size_t b = 0; b < bodies_; ++b)
     for (int d = 0; d < Dim; ++d)
       momentum[d] += gsums[b * Dim + d];
-  const double total = r.kineticEnergy + r.strainEnergy;
+  const double total = r.kineticEnergy + r.strainEnergy + r.dissipation;
   std::vector<double> row = {double(r.step),
                              r.time,
                              r.dt,
@@ -73,6 +74,7 @@ std::vector<double> History<Dim>::row(const StepRecord& r, double F0, double FL,
                              FL,
                              r.kineticEnergy,
                              r.strainEnergy,
+                             r.dissipation,
                              total,
                              r.externalWork,
                              total - r.externalWork,

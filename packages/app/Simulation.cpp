@@ -240,7 +240,7 @@ void Simulation<Dim>::printProgress(const StepRecord& r, const std::vector<doubl
     std::cout << "  load " << std::setprecision(8) << r.loadFactor;
   } else {
     std::cout << "  t " << std::setprecision(6) << r.time << "  dt " << r.dt << "  energy "
-              << std::setprecision(8) << r.kineticEnergy + r.strainEnergy;
+              << std::setprecision(8) << r.kineticEnergy + r.strainEnergy + r.dissipation;
   }
   const double residual = r.newton.residualNorms.empty() ? 0.0 : r.newton.residualNorms.back();
   std::cout << "  newton " << r.newton.iterations() << "  linear "
@@ -274,6 +274,7 @@ std::unique_ptr<Output<Dim>> Simulation<Dim>::startOutput(const History<Dim>& hi
   StepRecord initial;
   initial.kineticEnergy = kineticEnergy<Dim>(particles_, *comm_);
   initial.strainEnergy = strainEnergy<Dim>(particles_, materials_, *comm_);
+  initial.dissipation = dissipatedEnergy<Dim>(particles_, materials_, *comm_);
   initial.loadFactor = isStatic(deck_.sublist("Time Integration")) ? 0.0 : 1.0;
   const auto F0 = reactions();
   output->appendHistory(history.row(initial, F0[0], F0[1], particles_, *comm_));

@@ -33,6 +33,10 @@ Teuchos::ParameterList timeIntegrationValidParameters() {
   auto& statics = valid.sublist("[Type=static]");
   declareInt(statics, "Load Steps", 1, "Equal load increments from 0 to the full loads",
              Bounds::atLeast(1));
+  declareFormula(statics, "Load Path", "s", {"s"},
+                 "The load factor lambda(s) as a formula of the pseudo-time s, which the load "
+                 "steps advance from 0 to 1 (s: a ramp to the full loads; for example "
+                 "'s < 0.5 ? 2*s : 2 - 2*s' loads and unloads)");
   declareDouble(statics, "Minimum Load Increment", 1e-4,
                 "Smallest load increment a failed step may be cut to", Bounds::positive());
 

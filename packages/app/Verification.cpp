@@ -111,13 +111,15 @@ VerificationResult Verification::check(const ParticleSet<Dim>& particles,
   if (reactionTolerance_ > 0) {
     for (const auto& [name, value, expected] :
          {std::make_tuple("F0", F0, expectedF0_), std::make_tuple("FL", FL, expectedFL_)}) {
+      if (std::isnan(value))
+        continue;  // the deck has no Robin condition at this end
       std::ostringstream msg;
       msg.precision(10);
       const double error = std::abs(value - expected) / std::max(1.0, std::abs(expected));
       msg << name << " = " << value << ", expected " << expected << " (relative difference "
           << std::scientific << std::setprecision(2) << error << ", tolerance "
           << reactionTolerance_ << ")";
-      if (error > reactionTolerance_)
+      if (!(error <= reactionTolerance_))
         result.failures.push_back(msg.str());
       result.report.push_back(msg.str());
     }

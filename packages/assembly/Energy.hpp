@@ -17,6 +17,11 @@ template <int Dim>
 double strainEnergy(const ParticleSet<Dim>& particles, const Materials<Dim>& materials,
                     const Comm& comm);
 
+// Energy the materials have dissipated since the start (plastic work not stored).
+template <int Dim>
+double dissipatedEnergy(const ParticleSet<Dim>& particles, const Materials<Dim>& materials,
+                        const Comm& comm);
+
 template <int Dim, class Space = DefaultExecSpace>
 double bodyForceWork(const ParticleSet<Dim, Space>& particles,
                      const typename ParticleSet<Dim, Space>::Vectors& uBefore, double scale,

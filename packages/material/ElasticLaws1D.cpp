@@ -18,22 +18,6 @@ Bounds boundsOf(const std::string& parameter) {
   return parameter == "E" ? Bounds::positive() : Bounds::any();
 }
 
-// The law's parameters at the particles, one table per parameter, for device kernels.
-constexpr int kMaxLawParameters = 4;
-struct ParameterTables {
-  Kokkos::Array<Material<1>::Table, kMaxLawParameters> tables;
-  int count = 0;
-  explicit ParameterTables(const std::vector<Material<1>::Table>& t)
-      : count(static_cast<int>(t.size())) {
-    for (int j = 0; j < kMaxLawParameters; ++j)
-      tables[j] = t.at(j < count ? j : 0);
-  }
-  KOKKOS_INLINE_FUNCTION void at(int p, double k[kMaxLawParameters]) const {
-    for (int j = 0; j < count; ++j)
-      k[j] = tables[j](p, 0);
-  }
-};
-
 }  // namespace
 
 template <class Law>
@@ -74,7 +58,7 @@ template <class Law>
 void ElasticLaw1D<Law>::firstPiola(const Evaluation& at, Tensors& P, Tangents& A) const {
   const auto members = at.members;
   const auto F = at.F;
-  const ParameterTables parameters(at.variables);
+  const ParameterTables<1> parameters(at.variables);
   const int n = static_cast<int>(members.extent(0));
   int firstBad = n;
   Kokkos::parallel_reduce(
@@ -106,7 +90,7 @@ template <class Law>
 void ElasticLaw1D<Law>::energyDensity(const Evaluation& at, Scalars& W) const {
   const auto members = at.members;
   const auto F = at.F;
-  const ParameterTables parameters(at.variables);
+  const ParameterTables<1> parameters(at.variables);
   Kokkos::parallel_for(
       "impm::ElasticLaw1D::energy", RangePolicy<ExecutionSpace>(0, members.extent(0)),
       KOKKOS_LAMBDA(const int i) {
@@ -126,5 +110,6 @@ template class ElasticLaw1D<LinearLaw>;
 template class ElasticLaw1D<LinearFiniteLaw>;
 template class ElasticLaw1D<CubicLaw>;
 template class ElasticLaw1D<NeoHookeanLaw1D>;
+template class ElasticLaw1D<HenckyLaw1D>;
 
 }  // namespace impm

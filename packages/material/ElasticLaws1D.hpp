@@ -8,6 +8,8 @@
 //   linear-finite   P = E (F - 1)                     (the same law: 1-D strain is F - 1)
 //   cubic           P = E eps + C eps^3               (problem N1)
 //   neo-hookean-1d  P = (E / 2) (F - 1 / F)           (problem T1; needs F > 0)
+//   hencky-1d       P = E ln(F) / F                   (Hencky in uniaxial stress, nu = 0:
+//                                                      Kirchhoff tau = E ln F; needs F > 0)
 
 #include <Teuchos_ParameterList.hpp>
 
@@ -59,6 +61,18 @@ struct NeoHookeanLaw1D {
       return {0.0, k[0], 0.0, false};
     return {0.5 * k[0] * (F - 1.0 / F), 0.5 * k[0] * (1.0 + 1.0 / (F * F)),
             0.5 * k[0] * (0.5 * (F * F - 1.0) - Kokkos::Experimental::log(F)), true};
+  }
+};
+
+struct HenckyLaw1D {
+  static const char* model() { return "hencky-1d"; }
+  static std::vector<std::string> parameters() { return {"E"}; }
+  static constexpr bool linear = false;
+  KOKKOS_INLINE_FUNCTION static LawValue evaluate(double F, const double* k) {
+    if (!(F > 0.0))
+      return {0.0, k[0], 0.0, false};
+    const double e = Kokkos::Experimental::log(F);
+    return {k[0] * e / F, k[0] * (1.0 - e) / (F * F), 0.5 * k[0] * e * e, true};
   }
 };
 

@@ -77,6 +77,10 @@ class Material {
   // unit reference length and section).
   virtual void energyDensity(const Evaluation& at, Scalars& W) const = 0;
 
+  // Energy dissipated per unit reference volume since the start (plastic work that is not
+  // stored), from the committed state; history-free laws dissipate nothing and leave D.
+  virtual void dissipationDensity(const Evaluation& /*at*/, Scalars& /*D*/) const {}
+
   // Out-of-plane Cauchy stress sigma_zz (2-D plane strain; output only).  Laws without one
   // leave it untouched.
   virtual void outOfPlaneStress(const Evaluation& /*at*/, Scalars& /*stressZZ*/) const {}

@@ -6,7 +6,10 @@
 #include "core/Parameters.hpp"
 #include "material/ElasticLaws1D.hpp"
 #include "material/FormulaLaw1D.hpp"
+#include "material/HenckyLaw.hpp"
+#include "material/J2Plasticity.hpp"
 #include "material/PlaneStrainLaws.hpp"
+#include "material/PlasticLaw1D.hpp"
 
 namespace impm {
 
@@ -23,6 +26,8 @@ std::vector<MaterialModel<1>>& registry<1>() {
       materialModel<ElasticLaw1D<LinearFiniteLaw>, 1>(),
       materialModel<ElasticLaw1D<CubicLaw>, 1>(),
       materialModel<ElasticLaw1D<NeoHookeanLaw1D>, 1>(),
+      materialModel<ElasticLaw1D<HenckyLaw1D>, 1>(),
+      materialModel<J2Law1D, 1>(),
       materialModel<FormulaLaw1D, 1>(),
   };
   return models;
@@ -33,6 +38,8 @@ std::vector<MaterialModel<2>>& registry<2>() {
   static std::vector<MaterialModel<2>> models = {
       materialModel<PlaneStrainLaw<LinearElasticLaw>, 2>(),
       materialModel<PlaneStrainLaw<NeoHookeanLaw>, 2>(),
+      materialModel<PlaneStrainLaw<HenckyLaw>, 2>(),
+      materialModel<J2PlaneStrain, 2>(),
   };
   return models;
 }

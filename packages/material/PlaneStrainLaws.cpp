@@ -1,5 +1,7 @@
 #include "material/PlaneStrainLaws.hpp"
 
+#include "material/HenckyLaw.hpp"
+
 #include <sstream>
 
 #include "core/Errors.hpp"
@@ -7,32 +9,41 @@
 
 namespace impm {
 
-namespace {
-
-KOKKOS_INLINE_FUNCTION void load(const Material<2>::Tensors& F, int p, double f[2][2]) {
-  for (int a = 0; a < 2; ++a)
-    for (int b = 0; b < 2; ++b)
-      f[a][b] = F(p, a, b);
+void throwIfInverted(const Material<2>& material, const char* model,
+                     const Material<2>::Evaluation& at, int firstBad) {
+  if (firstBad >= static_cast<int>(at.members.extent(0)))
+    return;
+  auto Fh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), at.F);
+  auto id = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), at.particles.id);
+  auto m = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), at.members);
+  std::ostringstream msg;
+  msg << "material '" << material.name() << "' (" << model
+      << ") is not defined at J = det F = " << determinant<2>(Fh, m(firstBad)) << " (particle "
+      << id(m(firstBad)) << "): the particle is inverted";
+  throw NumericalError(msg.str());
 }
 
-}  // namespace
+void declareElasticConstants(Teuchos::ParameterList& valid) {
+  declareDouble(valid, "E", 1.0, "Young's modulus (plane strain)", Bounds::positive(), true);
+  declareDouble(valid, "nu", 0.0, "Poisson's ratio, -1 < nu < 0.5", Bounds{-1.0, 0.5, true, true},
+                true);
+}
+
+Lame lameOf(const Teuchos::ParameterList& params) {
+  const double E = params.get<double>("E"), nu = params.get<double>("nu");
+  return {E / (2.0 * (1.0 + nu)), E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu))};
+}
 
 template <class Law>
 Teuchos::ParameterList PlaneStrainLaw<Law>::validParameters() {
   Teuchos::ParameterList valid;
-  declareDouble(valid, "E", 1.0, "Young's modulus (plane strain)", Bounds::positive(), true);
-  declareDouble(valid, "nu", 0.0, "Poisson's ratio, -1 < nu < 0.5", Bounds{-1.0, 0.5, true, true},
-                true);
+  declareElasticConstants(valid);
   return valid;
 }
 
 template <class Law>
 PlaneStrainLaw<Law>::PlaneStrainLaw(const std::string& name, const Teuchos::ParameterList& params)
-    : Material<2>(name, params.get<double>("Density")) {
-  const double E = params.get<double>("E"), nu = params.get<double>("nu");
-  lame_.mu = E / (2.0 * (1.0 + nu));
-  lame_.lambda = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
-}
+    : Material<2>(name, params.get<double>("Density")), lame_(lameOf(params)) {}
 
 template <class Law>
 void PlaneStrainLaw<Law>::firstPiola(const Evaluation& at, Tensors& P, Tangents& A) const {
@@ -50,25 +61,10 @@ void PlaneStrainLaw<Law>::firstPiola(const Evaluation& at, Tensors& P, Tangents&
         const PlaneStrainValue v = Law::evaluate(f, lame);
         if (!v.admissible && i < bad)
           bad = i;
-        for (int a = 0; a < 2; ++a)
-          for (int b = 0; b < 2; ++b) {
-            P(p, a, b) = v.P[a][b];
-            for (int c = 0; c < 2; ++c)
-              for (int d = 0; d < 2; ++d)
-                A(p, a, b, c, d) = v.A[a][b][c][d];
-          }
+        store(P, A, p, v.P, v.A);
       },
       Kokkos::Min<int>(firstBad));
-  if (firstBad < n) {
-    auto Fh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), F);
-    auto id = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), at.particles.id);
-    auto m = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), members);
-    std::ostringstream msg;
-    msg << "material '" << name() << "' (" << Law::model()
-        << ") is not defined at J = det F = " << determinant<2>(Fh, m(firstBad)) << " (particle "
-        << id(m(firstBad)) << "): the particle is inverted";
-    throw NumericalError(msg.str());
-  }
+  throwIfInverted(*this, Law::model(), at, firstBad);
 }
 
 template <class Law>
@@ -103,5 +99,6 @@ void PlaneStrainLaw<Law>::outOfPlaneStress(const Evaluation& at, Scalars& stress
 
 template class PlaneStrainLaw<LinearElasticLaw>;
 template class PlaneStrainLaw<NeoHookeanLaw>;
+template class PlaneStrainLaw<HenckyLaw>;
 
 }  // namespace impm

@@ -95,6 +95,34 @@ struct NeoHookeanLaw {
   }
 };
 
+// Row p of a view of 2 x 2 tensors.
+KOKKOS_INLINE_FUNCTION void load(const Material<2>::Tensors& F, int p, double f[2][2]) {
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b)
+      f[a][b] = F(p, a, b);
+}
+
+// P(p) and A(p) from a law's values.
+KOKKOS_INLINE_FUNCTION void store(const Material<2>::Tensors& P, const Material<2>::Tangents& A,
+                                  int p, const double Pv[2][2], const double Av[2][2][2][2]) {
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b) {
+      P(p, a, b) = Pv[a][b];
+      for (int c = 0; c < 2; ++c)
+        for (int d = 0; d < 2; ++d)
+          A(p, a, b, c, d) = Av[a][b][c][d];
+    }
+}
+
+// Throws NumericalError naming the material and the particle when firstBad is a member index
+// (the first particle where the law is undefined: J <= 0); returns when it is past the end.
+void throwIfInverted(const Material<2>& material, const char* model,
+                     const Material<2>::Evaluation& at, int firstBad);
+
+// E and nu (required) of the plane-strain laws, and their Lame constants.
+void declareElasticConstants(Teuchos::ParameterList& valid);
+Lame lameOf(const Teuchos::ParameterList& params);
+
 template <class Law>
 class PlaneStrainLaw : public Material<2> {
  public:

@@ -1,13 +1,15 @@
 #include "solver/QuasiStaticStepper.hpp"
 
+#include "core/Parameters.hpp"
 #include "core/Timers.hpp"
 
 namespace impm {
 
 namespace {
 
-bool fullyLoaded(double loadFactor) {
-  return loadFactor >= 1.0 - 1e-12;
+// The stepper's state.loadFactor is the pseudo-time s; the loads are scaled by lambda(s).
+bool fullyLoaded(double s) {
+  return s >= 1.0 - 1e-12;
 }
 
 }  // namespace
@@ -17,7 +19,8 @@ QuasiStaticStepper<Dim>::QuasiStaticStepper(const Teuchos::ParameterList& params
                                             StepperSetup<Dim> setup)
     : Stepper<Dim>(std::move(setup), 1.0 / params.get<int>("Load Steps"),
                    params.get<double>("Minimum Load Increment")),
-      time_(params.get<double>("Final Time")) {}
+      time_(params.get<double>("Final Time")),
+      loadPath_(formulaText(params, "Load Path"), {"s"}) {}
 
 template <int Dim>
 void QuasiStaticStepper<Dim>::run(const StepCallback<Dim>& onStep) {
@@ -26,22 +29,23 @@ void QuasiStaticStepper<Dim>::run(const StepCallback<Dim>& onStep) {
     this->setup_.applyLoads(time_);  // at the particles' positions at the start of the step
     state.size = std::min(this->size(), 1.0 - state.loadFactor);
     const double from = state.loadFactor, to = from + state.size;
-    auto system = this->buildSystem(time_, to);
+    const double lambdaFrom = loadPath_(from), lambdaTo = loadPath_(to);
+    auto system = this->buildSystem(time_, lambdaTo);
     auto du = system->initialGuess();
     NewtonReport report;
     if (!this->solve(*system, *du, report)) {
       const std::string step = "load step " + std::to_string(state.step + 1);
-      this->cutBack(
-          step + " (load factor " + std::to_string(from) + " -> " + std::to_string(to) + ")", step,
-          "load increment", "Minimum Load Increment", report);
+      this->cutBack(step + " (load factor " + std::to_string(lambdaFrom) + " -> " +
+                        std::to_string(lambdaTo) + ")",
+                    step, "load increment", "Minimum Load Increment", report);
       continue;
     }
-    this->gridToParticles(*system, *du, 0.5 * (from + to));
+    this->gridToParticles(*system, *du, 0.5 * (lambdaFrom + lambdaTo));
     state.loadFactor = to;
     state.time = time_ * to;  // pseudo-time: the load factor scaled to Final Time
     StepRecord record;
     record.time = state.time;
-    record.loadFactor = to;
+    record.loadFactor = lambdaTo;
     record.last = fullyLoaded(to);
     record.newton = report;
     this->accept(record, StepGrid<Dim>{*system, *du, nullptr, nullptr}, onStep);

@@ -1,12 +1,15 @@
 #pragma once
 // Static load stepping: the loads (body forces, tractions, Robin gamma, prescribed
-// displacements) are ramped by a load factor from 0 to 1 in Time Integration/Load Steps
-// equal increments; each increment is a Newton solve of the grid system.  A failed
+// displacements) are scaled by a load factor lambda(s), a function of the pseudo-time s that
+// runs from 0 to 1 in Time Integration/Load Steps equal increments (Load Path; lambda = s by
+// default, a ramp; a path that rises and falls loads and unloads a plastic body); each
+// increment is a Newton solve of the grid system.  A failed
 // increment is halved and retried, down to Minimum Load Increment, after which the run stops
 // with the Newton history.  Formulas are evaluated at t = Final Time.
 
 #include <Teuchos_ParameterList.hpp>
 
+#include "core/Formula.hpp"
 #include "solver/Stepper.hpp"
 
 namespace impm {
@@ -23,6 +26,7 @@ class QuasiStaticStepper : public Stepper<Dim> {
 
  private:
   double time_;
+  Formula loadPath_;  // lambda(s)
 };
 
 }  // namespace impm

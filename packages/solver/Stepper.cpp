@@ -70,6 +70,7 @@ void Stepper<Dim>::accept(StepRecord& record, const StepGrid<Dim>& grid,
   record.step = ++state_.step;
   record.attempts = state_.attempts + 1;
   record.strainEnergy = strainEnergy<Dim>(setup_.particles, setup_.materials, comm);
+  record.dissipation = dissipatedEnergy<Dim>(setup_.particles, setup_.materials, comm);
   record.externalWork = state_.bodyWork + contributionWork<Dim>(setup_.contributions);
   state_.attempts = 0;
   state_.size = std::min(2 * size(), nominal_);  // grows back after a cutback

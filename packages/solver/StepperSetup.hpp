@@ -54,7 +54,7 @@ struct StepRecord {
   int attempts = 1;   // 1 + number of cutbacks before this step was accepted
   bool last = false;  // the run ends with this step
   NewtonReport newton;
-  double kineticEnergy = 0.0, strainEnergy = 0.0, externalWork = 0.0;
+  double kineticEnergy = 0.0, strainEnergy = 0.0, dissipation = 0.0, externalWork = 0.0;
 };
 
 // The grid solution of an accepted step, for output (vectors on system.unknownMap()).

@@ -62,9 +62,18 @@ def convergence(args):
             print(r.stdout, r.stderr)
             sys.exit("impm failed at %d cells" % n)
         row = read_csv(os.path.join(out, stem(args.deck) + "_verification.csv"))[0]
-        energy = [float(r["total_energy"]) for r in
-                  read_csv(os.path.join(out, stem(args.deck) + "_history.csv"))]
+        history = read_csv(os.path.join(out, stem(args.deck) + "_history.csv"))
+        energy = [float(r["total_energy"]) for r in history]
         change = max(abs(e - energy[0]) for e in energy) / energy[0] if energy[0] else 0.0
+        if args.energy_balance is not None:
+            # external work = strain energy + kinetic energy + dissipation, at every step
+            work = max(abs(float(r["external_work"])) for r in history)
+            imbalance = max(abs(float(r["energy_balance"])) for r in history) / work
+            print("energy balance at %d cells: largest |total - external work| = %.2e of the "
+                  "largest external work" % (n, imbalance))
+            if imbalance > args.energy_balance:
+                failures.append("energy balance %.2e at %d cells (allowed %g)"
+                                % (imbalance, n, args.energy_balance))
         if args.field:
             particles = read_csv(os.path.join(out, stem(args.deck) + "_particles.csv"))
             field_errors.append(field_error(particles, *args.field))
@@ -159,6 +168,39 @@ def uniform(args):
         mean = sum(float(p[name]) for p in rows) / len(rows)
         if abs(mean - float(value)) > args.rtol * max(1.0, abs(float(value))):
             failures.append("%s = %.15g, expected %s" % (name, mean, value))
+    for f in failures:
+        print("FAIL:", f)
+    sys.exit(1 if failures else 0)
+
+
+def unloading(args):
+    """A homogeneous deck that unloads at its end: run it to its peak (--peak-set) and as
+    written; between the two the response must be elastic: the Kirchhoff stress
+    tau_yy = J sigma_yy changes by --modulus times the change of ln F_yy (Hencky elasticity,
+    uniaxial plane strain) and the plastic strain does not change."""
+    means = []
+    for sets in (args.peak_set, []):
+        out = tempfile.mkdtemp(prefix="impm-unload-", dir=".")
+        r = run_impm(args, args.deck, out, ["Solver/Print Iterations=false"] + sets, 1)
+        if r.returncode != 0:
+            print(r.stdout, r.stderr)
+            sys.exit("impm failed")
+        rows = read_csv(os.path.join(out, stem(args.deck) + "_particles.csv"))
+        shutil.rmtree(out)
+        means.append({c: sum(float(p[c]) for p in rows) / len(rows)
+                      for c in ("J", "stress_yy", "F_yy", args.plastic)})
+    peak, end = means
+    slope = ((end["J"] * end["stress_yy"] - peak["J"] * peak["stress_yy"])
+             / (math.log(end["F_yy"]) - math.log(peak["F_yy"])))
+    change = abs(end[args.plastic] - peak[args.plastic])
+    print("unloading from F_yy %.6f to %.6f: d tau_yy / d ln F_yy = %.12g (elastic %.12g), "
+          "plastic strain %.15g -> %.15g" % (peak["F_yy"], end["F_yy"], slope, args.modulus,
+                                              peak[args.plastic], end[args.plastic]))
+    failures = []
+    if abs(slope / args.modulus - 1) > args.rtol:
+        failures.append("unloading slope %.12g is not the elastic %.12g" % (slope, args.modulus))
+    if change > 1e-14 or peak[args.plastic] <= 0:
+        failures.append("the plastic strain must be positive and unchanged on unloading")
     for f in failures:
         print("FAIL:", f)
     sys.exit(1 if failures else 0)
@@ -354,6 +396,8 @@ def main():
                    help="Time Step at the first size, scaled with the cell size")
     c.add_argument("--energy-drift", type=float,
                    help="largest relative change of the total energy at any size")
+    c.add_argument("--energy-balance", type=float,
+                   help="largest |energy_balance| over the largest external work, every step")
     c.add_argument("--energy-loss", type=float,
                    help="the run must lose at least this fraction of its energy (non-conserving)")
     c.add_argument("--np", type=int, default=1)
@@ -372,6 +416,13 @@ def main():
     u.add_argument("--expect", nargs=2, action="append", default=[], metavar=("COLUMN", "VALUE"))
     u.add_argument("--np", type=int, default=1)
     u.add_argument("--set", action="append", default=[])
+
+    w = sub.add_parser("unloading")
+    w.add_argument("--deck", required=True)
+    w.add_argument("--peak-set", action="append", default=[], help="--set values of the peak run")
+    w.add_argument("--modulus", type=float, required=True)
+    w.add_argument("--plastic", default="equivalent_plastic_strain")
+    w.add_argument("--rtol", type=float, default=1e-9)
 
     r = sub.add_parser("ranks")
     r.add_argument("--deck", required=True)
@@ -414,7 +465,7 @@ def main():
 
     args = p.parse_args()
     {"convergence": convergence, "ranks": ranks, "fails": fails, "docs": docs, "newton": newton,
-     "same": same, "uniform": uniform}[args.check](args)
+     "same": same, "uniform": uniform, "unloading": unloading}[args.check](args)
 
 
 if __name__ == "__main__":

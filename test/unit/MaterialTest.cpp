@@ -109,7 +109,7 @@ TEST_P(EveryLaw, TangentAndEnergyAreConsistentWithTheStress) {
 
 INSTANTIATE_TEST_SUITE_P(Material, EveryLaw,
                          ::testing::Values("linear", "linear-finite", "cubic", "neo-hookean-1d",
-                                           "formula"));
+                                           "hencky-1d", "formula"));
 
 TEST(ElasticLaws1D, ClosedFormValues) {
   const double e = 0.2, F = 1.0 + e, E = 1.5;  // at x = 0.5
@@ -331,7 +331,7 @@ TEST_P(EveryPlaneStrainLaw, TangentAndEnergyAreConsistentWithTheStress) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Material, EveryPlaneStrainLaw,
-                         ::testing::Values("linear-elastic", "neo-hookean"));
+                         ::testing::Values("linear-elastic", "neo-hookean", "hencky"));
 
 TEST(NeoHookean, UniaxialPlaneStrainClosedForm) {
   // F = diag(s, 1): P_xx = mu (s - 1/s) + lambda ln s / s, sigma_zz = lambda ln s / s.

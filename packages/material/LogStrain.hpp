@@ -1,0 +1,145 @@
+#pragma once
+// The kinematics of the finite-strain laws in plane strain (doc/theory.md, "Hencky
+// elasticity and the exponential map"): symmetric 3 x 3 tensors with no out-of-plane shear,
+// the logarithm and the exponential of such a tensor, the Hencky stress of a logarithmic
+// strain, and the first Piola stress of a Kirchhoff stress.  Written on a scalar type T,
+// double or Dual<4>, so that one code gives the stress and its exact derivative.
+//
+// ln and exp are isotropic tensor functions: f(B) = sum_i f(lambda_i) n_i (x) n_i.  On the
+// in-plane block, with m the mean and r the half-difference of the two eigenvalues,
+//   f(B) = g0 I + g1 (B - m I),  g0 = (f(m + r) + f(m - r)) / 2,  g1 = (f(m + r) - f(m - r)) / (2
+//   r),
+// and g0, g1 are even in r: near coincident eigenvalues (r -> 0, where eigenvectors are
+// undefined and their derivatives blow up) they are evaluated by their Taylor series in r^2,
+// so f(B) and its derivative are smooth and exact there, the reference state included.
+
+#include "core/Dual.hpp"
+
+namespace impm {
+
+// A symmetric 3 x 3 tensor of plane strain: xz = yz = 0.
+template <class T>
+struct PlaneSym {
+  T xx, yy, xy, zz;
+};
+
+template <class T>
+KOKKOS_INLINE_FUNCTION T trace(const PlaneSym<T>& a) {
+  return a.xx + a.yy + a.zz;
+}
+
+// a : a
+template <class T>
+KOKKOS_INLINE_FUNCTION T squaredNorm(const PlaneSym<T>& a) {
+  return a.xx * a.xx + a.yy * a.yy + a.zz * a.zz + 2.0 * a.xy * a.xy;
+}
+
+// a + s I
+template <class T, class S>
+KOKKOS_INLINE_FUNCTION PlaneSym<T> plusIdentity(const PlaneSym<T>& a, const S& s) {
+  return {a.xx + s, a.yy + s, a.xy, a.zz + s};
+}
+
+template <class T, class S>
+KOKKOS_INLINE_FUNCTION PlaneSym<T> scaled(const PlaneSym<T>& a, const S& s) {
+  return {a.xx * s, a.yy * s, a.xy * s, a.zz * s};
+}
+
+// The deviatoric part a - tr(a)/3 I.
+template <class T>
+KOKKOS_INLINE_FUNCTION PlaneSym<T> deviator(const PlaneSym<T>& a) {
+  return plusIdentity(a, -trace(a) / 3.0);
+}
+
+// ln x, with the difference ln(lo + 2r) - ln(lo) computed without cancellation.
+struct Logarithm {
+  template <class T>
+  KOKKOS_INLINE_FUNCTION static T f(const T& x) {
+    return logOf(x);
+  }
+  template <class T>
+  KOKKOS_INLINE_FUNCTION static T difference(const T& lo, const T& twoR) {
+    return log1pOf(twoR / lo);
+  }
+  // f', f'', f''' at m
+  template <class T>
+  KOKKOS_INLINE_FUNCTION static void derivatives(const T& m, T& d1, T& d2, T& d3) {
+    d1 = 1.0 / m, d2 = -d1 * d1, d3 = -2.0 * d2 * d1;
+  }
+  KOKKOS_INLINE_FUNCTION static bool nearlyEqual(double m, double r) { return r < 1e-5 * m; }
+};
+
+// exp x, with exp(lo + 2r) - exp(lo) = exp(lo) expm1(2r).
+struct Exponential {
+  template <class T>
+  KOKKOS_INLINE_FUNCTION static T f(const T& x) {
+    return expOf(x);
+  }
+  template <class T>
+  KOKKOS_INLINE_FUNCTION static T difference(const T& lo, const T& twoR) {
+    return expOf(lo) * expm1Of(twoR);
+  }
+  template <class T>
+  KOKKOS_INLINE_FUNCTION static void derivatives(const T& m, T& d1, T& d2, T& d3) {
+    d1 = d2 = d3 = expOf(m);
+  }
+  KOKKOS_INLINE_FUNCTION static bool nearlyEqual(double /*m*/, double r) { return r < 1e-5; }
+};
+
+// f(B) for the isotropic function Fn (Logarithm: B symmetric positive definite).
+template <class Fn, class T>
+KOKKOS_INLINE_FUNCTION PlaneSym<T> isotropicFunction(const PlaneSym<T>& B) {
+  const T m = 0.5 * (B.xx + B.yy), h = 0.5 * (B.xx - B.yy);
+  const T s = h * h + B.xy * B.xy;  // r^2
+  T g0, g1;
+  if (Fn::nearlyEqual(valueOf(m), Kokkos::Experimental::sqrt(valueOf(s)))) {
+    T d1, d2, d3;
+    Fn::derivatives(m, d1, d2, d3);
+    g0 = Fn::f(m) + 0.5 * d2 * s;
+    g1 = d1 + d3 * s / 6.0;
+  } else {
+    const T r = sqrtOf(s);
+    // The smaller eigenvalue; from the determinant when m > 0, where m - r would cancel.
+    const T lo = valueOf(m) > 0.0 ? (B.xx * B.yy - B.xy * B.xy) / (m + r) : m - r;
+    const T diff = Fn::difference(lo, 2.0 * r);
+    g0 = Fn::f(lo) + 0.5 * diff;
+    g1 = diff / (2.0 * r);
+  }
+  return {g0 + g1 * h, g0 - g1 * h, g1 * B.xy, Fn::f(B.zz)};
+}
+
+// Hencky's law: tau = lambda tr(eps) I + 2 mu eps (isotropic, linear in the log strain).
+template <class T>
+KOKKOS_INLINE_FUNCTION PlaneSym<T> henckyStress(const PlaneSym<T>& eps, double mu, double lambda) {
+  return plusIdentity(scaled(eps, 2.0 * mu), lambda * trace(eps));
+}
+
+// Hencky's stored energy: lambda/2 tr(eps)^2 + mu eps : eps.
+template <class T>
+KOKKOS_INLINE_FUNCTION T henckyEnergy(const PlaneSym<T>& eps, double mu, double lambda) {
+  const T tr = trace(eps);
+  return 0.5 * lambda * tr * tr + mu * squaredNorm(eps);
+}
+
+// F A F^T for the in-plane block of F (F_zz = 1).
+template <class T, class S>
+KOKKOS_INLINE_FUNCTION auto congruence(const S F[2][2], const PlaneSym<T>& a)
+    -> PlaneSym<decltype(S() * T())> {
+  using R = decltype(S() * T());
+  const R t00 = F[0][0] * a.xx + F[0][1] * a.xy, t01 = F[0][0] * a.xy + F[0][1] * a.yy;
+  const R t10 = F[1][0] * a.xx + F[1][1] * a.xy, t11 = F[1][0] * a.xy + F[1][1] * a.yy;
+  return {t00 * F[0][0] + t01 * F[0][1], t10 * F[1][0] + t11 * F[1][1],
+          t00 * F[1][0] + t01 * F[1][1], R(a.zz)};
+}
+
+// The in-plane first Piola stress P = tau F^-T of a Kirchhoff stress.
+template <class T, class S>
+KOKKOS_INLINE_FUNCTION void piolaOfKirchhoff(const PlaneSym<T>& tau, const S Finv[2][2],
+                                             T P[2][2]) {
+  const T t[2][2] = {{tau.xx, tau.xy}, {tau.xy, tau.yy}};
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b)
+      P[a][b] = t[a][0] * Finv[b][0] + t[a][1] * Finv[b][1];
+}
+
+}  // namespace impm

@@ -1,0 +1,374 @@
+// material: the laws with history (j2 in plane strain, j2-1d) and Hencky elasticity, at
+// single points: tangents against central differences at elastic and plastic states, the
+// return map on the yield surface with the flow along the deviatoric stress, j2 without
+// yield equal to hencky, objectivity, and a plane-strain compression path against an
+// independent integration of the same law written here.
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+
+#include "core/Errors.hpp"
+#include "core/Parameters.hpp"
+#include "material/MaterialFactory.hpp"
+#include "material/MaterialState.hpp"
+
+namespace impm {
+namespace {
+
+using Matrix = std::array<double, 4>;  // (a, b) at 2a + b
+
+constexpr double kE = 1000.0, kNu = 0.3, kYield = 10.0, kH = 50.0;
+const double kMu = kE / (2 * (1 + kNu)), kLambda = kE * kNu / ((1 + kNu) * (1 - 2 * kNu));
+
+std::shared_ptr<Material<2>> planeStrainLaw(const std::string& model, double yield = kYield,
+                                            double H = kH) {
+  Teuchos::ParameterList p;
+  p.set("Model", model);
+  p.set("E", kE);
+  p.set("nu", kNu);
+  if (model == "j2") {
+    p.set("Yield Stress", yield);
+    p.set("Hardening Modulus", H);
+  }
+  validateParameters(p, materialValidParameters());
+  return createMaterial<2>("m", p);
+}
+
+// One material point (several copies, to evaluate perturbed F in one call) carried along a
+// deformation path: evaluate at trial F, commit the trial state of copy 0 to every copy.
+class Point {
+ public:
+  Point(std::shared_ptr<Material<2>> law, std::size_t copies)
+      : materials_{std::move(law)}, particles_(copies) {
+    declareMaterialVariables(particles_, materials_);
+    initializeMaterials(particles_, materials_, true);
+    trial_ = std::make_unique<TrialState<2>>(particles_, materials_);
+  }
+
+  struct Values {
+    std::vector<Matrix> P;
+    std::vector<std::array<double, 16>> A;
+  };
+
+  Values evaluate(const std::vector<Matrix>& F) {
+    const std::size_t n = particles_.size();
+    ParticleSet<2>::Tensors Fv("F", n), P("P", n);
+    Material<2>::Tangents A("A", n);
+    auto Fh = Kokkos::create_mirror_view(Fv);
+    for (std::size_t q = 0; q < n; ++q)
+      for (int k = 0; k < 4; ++k)
+        Fh(q, k / 2, k % 2) = F.at(q)[k];
+    Kokkos::deep_copy(Fv, Fh);
+    materials_[0]->firstPiola(evaluationOf(particles_, materials_, 0, Fv, trial_->of(0)), P, A);
+    auto Ph = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), P);
+    auto Ah = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), A);
+    Values v;
+    for (std::size_t q = 0; q < n; ++q) {
+      Matrix Pq;
+      std::array<double, 16> Aq;
+      for (int k = 0; k < 4; ++k)
+        Pq[k] = Ph(q, k / 2, k % 2);
+      for (int k = 0; k < 16; ++k)
+        Aq[k] = Ah(q, k / 8, (k / 4) % 2, (k / 2) % 2, k % 2);
+      v.P.push_back(Pq), v.A.push_back(Aq);
+    }
+    return v;
+  }
+
+  // The trial state of copy 0 becomes every copy's state.
+  void commit() {
+    for (const auto& t : trial_->of(0)) {
+      auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), t);
+      for (std::size_t q = 1; q < h.extent(0); ++q)
+        for (std::size_t c = 0; c < h.extent(1); ++c)
+          h(q, c) = h(0, c);
+      Kokkos::deep_copy(t, h);
+    }
+    commitMaterialState(particles_, materials_, *trial_);
+  }
+
+  // Component c of variable `name` in the trial state of copy 0.
+  double trial(std::size_t k, int c) const {
+    auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), trial_->of(0).at(k));
+    return h(0, c);
+  }
+  double committed(const std::string& name, int c) const {
+    auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles_.values(name));
+    return h(0, c);
+  }
+
+ private:
+  Materials<2> materials_;
+  ParticleSet<2> particles_;
+  std::unique_ptr<TrialState<2>> trial_;
+};
+
+// Largest |A - dP/dF (central differences, step h)| relative to max |A|, at F from the
+// point's committed state.
+double tangentError(Point& point, const Matrix& F, double h = 1e-6) {
+  std::vector<Matrix> Fs = {F};
+  for (int cd = 0; cd < 4; ++cd)
+    for (double s : {-1.0, 1.0}) {
+      Matrix G = F;
+      G[cd] += s * h;
+      Fs.push_back(G);
+    }
+  const auto v = point.evaluate(Fs);
+  double worst = 0, scale = 0;
+  for (int k = 0; k < 16; ++k)
+    scale = std::max(scale, std::abs(v.A[0][k]));
+  for (int cd = 0; cd < 4; ++cd)
+    for (int ab = 0; ab < 4; ++ab) {
+      const double fd = (v.P[2 + 2 * cd][ab] - v.P[1 + 2 * cd][ab]) / (2 * h);
+      worst = std::max(worst, std::abs(v.A[0][ab * 4 + cd] - fd));
+    }
+  return worst / scale;
+}
+
+std::vector<Matrix> copies(const Matrix& F, std::size_t n) {
+  return std::vector<Matrix>(n, F);
+}
+
+// Plane-strain compression F = diag(1, s) in `steps` equal steps of s, committed each step.
+void compress(Point& point, double s, int steps, std::size_t n) {
+  for (int i = 1; i <= steps; ++i) {
+    const double si = 1.0 + (s - 1.0) * i / steps;
+    point.evaluate(copies({1.0, 0.0, 0.0, si}, n));
+    point.commit();
+  }
+}
+
+// The Kirchhoff stress tau = P F^T (in-plane) of a law's P.
+Matrix kirchhoff(const Matrix& P, const Matrix& F) {
+  Matrix t;
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b)
+      t[2 * a + b] = P[2 * a] * F[2 * b] + P[2 * a + 1] * F[2 * b + 1];
+  return t;
+}
+
+TEST(J2PlaneStrain, TangentIsTheDerivativeOfTheReturnAtElasticAndPlasticStates) {
+  Point point(planeStrainLaw("j2"), 9);
+  const Matrix general = {0.97, 0.04, -0.03, 0.95};  // with shear and rotation
+  const double elastic = tangentError(point, {1.0, 0.002, 0.0, 0.998});
+  EXPECT_LT(elastic, 1e-7) << "elastic state";
+  const double firstYield = tangentError(point, general);
+  EXPECT_LT(firstYield, 1e-7) << "plastic from the virgin state";
+  compress(point, 0.9, 10, 9);
+  const double hardened = tangentError(point, {1.01, 0.03, -0.02, 0.88});
+  EXPECT_LT(hardened, 1e-7) << "plastic from a hardened state";
+  const double unloading = tangentError(point, {1.0, 0.0, 0.0, 0.905});
+  EXPECT_LT(unloading, 1e-7) << "elastic unloading from a plastic state";
+  Point perfect(planeStrainLaw("j2", kYield, 0.0), 9);
+  const double noHardening = tangentError(perfect, general);
+  EXPECT_LT(noHardening, 1e-7) << "perfect plasticity";
+  std::cout << "  j2 tangent, relative error against central differences (h = 1e-6): elastic "
+            << elastic << ", plastic " << firstYield << ", hardened " << hardened << ", unloading "
+            << unloading << ", H = 0 " << noHardening << "\n";
+}
+
+TEST(J2PlaneStrain, ReturnLandsOnTheYieldSurfaceWithIsochoricFlowAlongTheDeviator) {
+  Point point(planeStrainLaw("j2"), 1);
+  const Matrix F = {0.98, 0.05, -0.02, 0.9};
+  const auto v = point.evaluate({F});
+  const Matrix tau = kirchhoff(v.P[0], F);
+  // tau_zz from the trial elastic strain: q needs all three principal stresses.
+  const double alpha = point.trial(1, 0);
+  ASSERT_GT(alpha, 0.0) << "the point must yield";
+  // C_p^-1 = F^-1 b_e F^-T; b_e = exp(2 eps_e), tau = D : eps_e: recover eps_e from tau
+  // (Hencky inverted), and check ln det C_p^-1 = 0 (isochoric flow) and the yield condition.
+  const double cxx = point.trial(0, 0), cyy = point.trial(0, 1), czz = point.trial(0, 2),
+               cxy = point.trial(0, 3);
+  EXPECT_NEAR(czz * (cxx * cyy - cxy * cxy), 1.0, 1e-13) << "det C_p^-1 = 1";
+  // eps_e,zz from tau: tau_zz = lambda tr eps + 2 mu eps_zz, tr tau = (3 lambda + 2 mu) tr eps.
+  const double trTauInPlane = tau[0] + tau[3];
+  // Solve for tau_zz: eps_zz = ln(b_e,zz) / 2 = ln(C_p^-1 zz) / 2 (F_zz = 1).
+  const double epsZZ = 0.5 * std::log(czz);
+  // tau_zz = lambda (tr eps) + 2 mu eps_zz with tr eps = (trTauInPlane + tau_zz)/(3 lambda + 2 mu)
+  const double k3 = 3 * kLambda + 2 * kMu;
+  const double tauZZ = (kLambda * trTauInPlane / k3 + 2 * kMu * epsZZ) / (1 - kLambda / k3);
+  const double p = (trTauInPlane + tauZZ) / 3;
+  const double sxx = tau[0] - p, syy = tau[3] - p, szz = tauZZ - p, sxy = tau[1];
+  const double q = std::sqrt(1.5 * (sxx * sxx + syy * syy + szz * szz + 2 * sxy * sxy));
+  EXPECT_NEAR(q, kYield + kH * alpha, 1e-12 * kYield) << "f = q - (sigma_y + H alpha) = 0";
+  EXPECT_NEAR(tau[1], tau[2], 1e-12 * kYield) << "tau is symmetric";
+}
+
+TEST(J2PlaneStrain, WithoutYieldItIsHencky) {
+  Point j2(planeStrainLaw("j2", 1e30), 1), hencky(planeStrainLaw("hencky"), 1);
+  const Matrix F = {1.3, 0.2, -0.4, 0.7};
+  const auto a = j2.evaluate({F}), b = hencky.evaluate({F});
+  for (int k = 0; k < 4; ++k)
+    EXPECT_NEAR(a.P[0][k], b.P[0][k], 1e-12 * kE);
+  for (int k = 0; k < 16; ++k)
+    EXPECT_NEAR(a.A[0][k], b.A[0][k], 1e-12 * kE);
+}
+
+TEST(J2PlaneStrain, SuperposedRotationRotatesTheStress) {
+  Point point(planeStrainLaw("j2"), 2);
+  compress(point, 0.93, 5, 2);
+  const Matrix F = {1.02, 0.03, -0.01, 0.9};
+  const double c = std::cos(0.7), s = std::sin(0.7);
+  const Matrix QF = {c * F[0] - s * F[2], c * F[1] - s * F[3], s * F[0] + c * F[2],
+                     s * F[1] + c * F[3]};
+  const auto v = point.evaluate({F, QF});
+  ASSERT_GT(point.trial(1, 0), point.committed("equivalent_plastic_strain", 0));
+  const Matrix& P = v.P[0];
+  const Matrix QP = {c * P[0] - s * P[2], c * P[1] - s * P[3], s * P[0] + c * P[2],
+                     s * P[1] + c * P[3]};
+  for (int k = 0; k < 4; ++k)
+    EXPECT_NEAR(v.P[1][k], QP[k], 1e-12 * kE) << "P(QF) = Q P(F), component " << k;
+}
+
+// The independent reference: the same law (Hencky elasticity on logarithmic strains, von
+// Mises yield, linear hardening, associated flow) on the principal logarithmic strains of
+// F = diag(a, b), integrated in many small strain increments, each brought back to the yield
+// surface along the current normal.  The path compresses y to b = 0.95, then stretches x to
+// a = 1.05: the second leg turns the deviatoric strain rate, so the stress path is not
+// radial and the return's step size matters.
+struct Reference {
+  double tau[3] = {0, 0, 0}, alpha = 0;
+};
+
+struct Path {
+  double a, b;  // F = diag(a, b) at the end of each leg
+};
+const Path kLegs[] = {{1.0, 0.95}, {1.05, 0.95}};
+
+Reference integrateReference(int stepsPerLeg) {
+  Reference r;
+  double eps[3] = {0, 0, 0}, epsP[3] = {0, 0, 0};
+  double from[2] = {0, 0};
+  for (const Path& leg : kLegs) {
+    const double to[2] = {std::log(leg.a), std::log(leg.b)};
+    for (int i = 1; i <= stepsPerLeg; ++i) {
+      for (int k = 0; k < 2; ++k)
+        eps[k] = from[k] + (to[k] - from[k]) * i / stepsPerLeg;
+      double ee[3], tr = 0;
+      for (int k = 0; k < 3; ++k)
+        ee[k] = eps[k] - epsP[k], tr += ee[k];
+      double t[3], mean = 0;
+      for (int k = 0; k < 3; ++k)
+        t[k] = kLambda * tr + 2 * kMu * ee[k], mean += t[k] / 3;
+      double dev[3], ss = 0;
+      for (int k = 0; k < 3; ++k)
+        dev[k] = t[k] - mean, ss += dev[k] * dev[k];
+      const double q = std::sqrt(1.5 * ss);
+      const double over = q - (kYield + kH * r.alpha);
+      if (over > 0) {
+        const double dAlpha = over / (3 * kMu + kH);
+        for (int k = 0; k < 3; ++k)
+          epsP[k] += 1.5 * dAlpha * dev[k] / q;
+        r.alpha += dAlpha;
+      }
+    }
+    from[0] = to[0], from[1] = to[1];
+  }
+  double tr = 0, ee[3];
+  for (int k = 0; k < 3; ++k)
+    ee[k] = eps[k] - epsP[k], tr += ee[k];
+  for (int k = 0; k < 3; ++k)
+    r.tau[k] = kLambda * tr + 2 * kMu * ee[k];
+  return r;
+}
+
+TEST(J2PlaneStrain, CompressionPathMatchesAnIndependentIntegration) {
+  const Reference ref = integrateReference(100000);
+  double previous = 1e300;
+  for (int steps : {10, 100, 1000}) {
+    Point point(planeStrainLaw("j2"), 1);
+    Matrix F = {1.0, 0.0, 0.0, 1.0};
+    for (const Path& leg : kLegs) {
+      const Matrix start = F;
+      for (int i = 1; i <= steps; ++i) {
+        F = {start[0] + (leg.a - start[0]) * i / steps, 0.0, 0.0,
+             start[3] + (leg.b - start[3]) * i / steps};
+        point.evaluate({F});
+        point.commit();
+      }
+    }
+    const auto v = point.evaluate({F});
+    const Matrix tau = kirchhoff(v.P[0], F);
+    const double alpha = point.committed("equivalent_plastic_strain", 0);
+    const double error =
+        std::max({std::abs(tau[0] - ref.tau[0]) / kYield, std::abs(tau[3] - ref.tau[1]) / kYield,
+                  std::abs(alpha - ref.alpha) / ref.alpha});
+    std::cout << "  compression then stretch, " << steps << " steps per leg: tau_xx " << tau[0]
+              << " (reference " << ref.tau[0] << "), tau_yy " << tau[3] << " (" << ref.tau[1]
+              << "), alpha " << alpha << " (" << ref.alpha << "), relative error " << error << "\n";
+    EXPECT_LT(error, 0.5 * previous) << "the return converges to the reference as steps shrink";
+    previous = error;
+  }
+  EXPECT_LT(previous, 1e-3);
+}
+
+TEST(J2PlaneStrain, InvertedParticleIsANumericalError) {
+  Point point(planeStrainLaw("j2"), 1);
+  EXPECT_THROW(point.evaluate({{-0.5, 0.0, 0.0, 1.0}}), NumericalError);
+}
+
+TEST(J2PlaneStrain, InadmissibleParametersAreInputErrors) {
+  for (const auto& [name, value] : std::vector<std::pair<std::string, double>>{
+           {"Yield Stress", 0.0}, {"Yield Stress", -1.0}, {"Hardening Modulus", -1.0}}) {
+    Teuchos::ParameterList p;
+    p.set("Model", std::string("j2"));
+    p.set("E", kE);
+    p.set("nu", kNu);
+    p.set("Yield Stress", kYield);
+    p.set(name, value);
+    EXPECT_THROW(validateParameters(p, materialValidParameters()), InputError) << name;
+  }
+}
+
+// j2-1d: the primer's bar law with a return map.
+std::shared_ptr<Material<1>> bar(double E, double yield, double H) {
+  Teuchos::ParameterList p;
+  p.set("Model", std::string("j2-1d"));
+  p.set("E", std::to_string(E));
+  p.set("Yield Stress", std::to_string(yield));
+  p.set("Hardening Modulus", std::to_string(H));
+  validateParameters(p, materialValidParameters());
+  return createMaterial<1>("m", p);
+}
+
+TEST(J2Law1D, LoadingPastYieldAndUnloadingFollowTheExactBilinearLaw) {
+  const double E = 200.0, yield = 2.0, H = 20.0;
+  const Materials<1> materials = {bar(E, yield, H)};
+  ParticleSet<1> ps(1);
+  declareMaterialVariables(ps, materials);
+  initializeMaterials(ps, materials, true);
+  TrialState<1> trial(ps, materials);
+  auto at = [&](double F) {
+    ParticleSet<1>::Tensors Fv("F", 1), P("P", 1);
+    Material<1>::Tangents A("A", 1);
+    Kokkos::deep_copy(Fv, F);
+    materials[0]->firstPiola(evaluationOf(ps, materials, 0, Fv, trial.of(0)), P, A);
+    auto Ph = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), P);
+    auto Ah = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), A);
+    return std::make_pair(Ph(0, 0, 0), Ah(0, 0, 0, 0, 0));
+  };
+  const double peak = 0.05;  // 5 times the yield strain
+  const auto loaded = at(1.0 + peak);
+  const double expected = yield + E * H / (E + H) * (peak - yield / E);
+  EXPECT_NEAR(loaded.first, expected, 1e-13 * expected);
+  EXPECT_NEAR(loaded.second, E * H / (E + H), 1e-12 * E);
+  const double h = 1e-7;
+  EXPECT_NEAR(loaded.second, (at(1.0 + peak + h).first - at(1.0 + peak - h).first) / (2 * h),
+              1e-6 * E);
+  at(1.0 + peak);
+  commitMaterialState(ps, materials, trial);
+  // Unloading to zero stress leaves the plastic strain eps - sigma/E; the slope is E.
+  const double plastic = peak - expected / E;
+  const auto unloaded = at(1.0 + plastic);
+  EXPECT_NEAR(unloaded.first, 0.0, 1e-12 * yield);
+  EXPECT_NEAR(unloaded.second, E, 1e-12 * E);
+  // Reloading in compression yields at -(sigma_y + H alpha).
+  const double alpha = peak - yield / E - (expected - yield) / E;
+  const auto reversed = at(1.0 + plastic - (yield + H * alpha) / E - 0.01);
+  EXPECT_NEAR(reversed.first, -(yield + H * alpha) - E * H / (E + H) * 0.01, 1e-12 * E);
+}
+
+}  // namespace
+}  // namespace impm
