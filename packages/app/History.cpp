@@ -2,12 +2,15 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
+#include <algorithm>
 #include <limits>
 
 namespace impm {
 
 template <int Dim>
-History<Dim>::History(const std::vector<std::string>& bodyNames) : bodies_(bodyNames.size()) {
+History<Dim>::History(const std::vector<std::string>& bodyNames,
+                      const std::vector<std::string>& supportNames)
+    : bodies_(bodyNames.size()), supports_(supportNames.size()) {
   static_assert(Dim == 1 || Dim == 2, "History: the columns of this dimension");
   columns_ = {"step",
               "time",
@@ -30,6 +33,10 @@ History<Dim>::History(const std::vector<std::string>& bodyNames) : bodies_(bodyN
     if (Dim == 2)
       for (const char* c : {"vy_cm_", "y_min_", "y_max_"})
         columns_.push_back(c + b);
+  }
+  for (std::string s : supportNames) {
+    std::replace(s.begin(), s.end(), ' ', '_');
+    columns_.push_back("reaction_" + s);
   }
   for (const char* c : {"newton_iterations", "linear_iterations", "residual", "attempts"})
     columns_.push_back(c);
@@ -88,6 +95,8 @@ std::vector<double> History<Dim>::row(const StepRecord& r, double F0, double FL,
       row.push_back(glows[k]);
       row.push_back(ghighs[k]);
     }
+  for (std::size_t s = 0; s < supports_; ++s)  // the initial state has no reactions yet
+    row.push_back(s < r.supportForces.size() ? r.supportForces[s] : 0.0);
   const double residual = r.newton.residualNorms.empty() ? 0.0 : r.newton.residualNorms.back();
   for (double c : {double(r.newton.iterations()), double(r.newton.totalLinearIterations()),
                    residual, double(r.attempts)})

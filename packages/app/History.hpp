@@ -1,8 +1,8 @@
 #pragma once
 // The history file's columns and rows: one row per step with time, end forces, energies
 // (kinetic, strain, their sum, the external work and the balance KE + SE - W), the total
-// momentum, and per body the centre-of-mass velocity and the particles' extent, then the
-// Newton and linear iteration counts.
+// momentum, and per body the centre-of-mass velocity and the particles' extent, per
+// support (Dirichlet condition) its reaction, then the Newton and linear iteration counts.
 
 #include <string>
 #include <vector>
@@ -16,7 +16,9 @@ namespace impm {
 template <int Dim>
 class History {
  public:
-  explicit History(const std::vector<std::string>& bodyNames);
+  // supportNames: the conditions whose reactions are recorded (column reaction_<name>, spaces
+  // as '_'), in the order of StepRecord::supportForces.
+  History(const std::vector<std::string>& bodyNames, const std::vector<std::string>& supportNames);
 
   const std::vector<std::string>& columns() const { return columns_; }
   // The row of a step.  Collective (sums over every rank's particles).
@@ -24,7 +26,7 @@ class History {
                           const ParticleSet<Dim>& particles, const Comm& comm) const;
 
  private:
-  std::size_t bodies_;
+  std::size_t bodies_, supports_;
   std::vector<std::string> columns_;
 };
 

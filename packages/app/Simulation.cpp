@@ -308,7 +308,11 @@ std::unique_ptr<Stepper<Dim>> Simulation<Dim>::makeStepper() {
 template <int Dim>
 std::vector<std::string> Simulation<Dim>::run() {
   printHeader();
-  History<Dim> history(bodies_->columnNames());
+  std::vector<std::string> supports;
+  for (const auto& c : conditions_)
+    if (!c->reactionName().empty())
+      supports.push_back(c->reactionName());
+  History<Dim> history(bodies_->columnNames(), supports);
   const auto output = startOutput(history);
   const auto stepper = makeStepper();
   CheckpointSeries checkpoints(deck_.sublist("Output"), outputDirectory_, prefix_);

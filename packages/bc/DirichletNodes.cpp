@@ -27,7 +27,7 @@ Teuchos::ParameterList DirichletNodes<Dim>::validParameters() {
 template <int Dim>
 DirichletNodes<Dim>::DirichletNodes(const std::string& name, const Teuchos::ParameterList& params,
                                     const GridGeometry<Dim>& grid, double initialLoadFactor)
-    : grid_(grid), committedLoad_(initialLoadFactor) {
+    : name_(name), grid_(grid), committedLoad_(initialLoadFactor) {
   const std::string path = "Boundary Conditions/" + name + "/";
   component_ = params.get<std::string>("Component") == "x" ? 0 : 1;
   if (component_ >= Dim)

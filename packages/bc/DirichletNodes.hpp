@@ -33,11 +33,13 @@ class DirichletNodes : public Contribution<Dim> {
   // The time and load factor of the last commit (the prescribed values reached).
   std::vector<double> state() const override { return {committedTime_, committedLoad_}; }
   void restore(const std::vector<double>& state) override;
+  std::string reactionName() const override { return name_; }
 
  private:
   bool selects(const int idx[Dim]) const;
   double prescribed(const double* x, double time, double loadFactor) const;
 
+  std::string name_;
   GridGeometry<Dim> grid_;
   int component_;
   std::array<int, Dim> lo_{}, hi_{};  // selected node index range per direction (inclusive)

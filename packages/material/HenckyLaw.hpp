@@ -33,13 +33,6 @@ KOKKOS_INLINE_FUNCTION void unpackPiola(const Dual4 P[2][2], double Pv[2][2],
     }
 }
 
-// F^-1 of the in-plane block, given its determinant.
-template <class T>
-KOKKOS_INLINE_FUNCTION void inverseOf(const T F[2][2], const T& J, T Finv[2][2]) {
-  Finv[0][0] = F[1][1] / J, Finv[0][1] = -F[0][1] / J;
-  Finv[1][0] = -F[1][0] / J, Finv[1][1] = F[0][0] / J;
-}
-
 struct HenckyLaw {
   static const char* model() { return "hencky"; }
   static constexpr bool linear = false;

@@ -132,6 +132,29 @@ KOKKOS_INLINE_FUNCTION auto congruence(const S F[2][2], const PlaneSym<T>& a)
           t00 * F[1][0] + t01 * F[1][1], R(a.zz)};
 }
 
+// F^-1 of the in-plane block, given its determinant.
+template <class T>
+KOKKOS_INLINE_FUNCTION void inverseOf(const T F[2][2], const T& J, T Finv[2][2]) {
+  Finv[0][0] = F[1][1] / J, Finv[0][1] = -F[0][1] / J;
+  Finv[1][0] = -F[1][0] / J, Finv[1][1] = F[0][0] / J;
+}
+
+// The trial elastic strain of a step from the plastic state C_p^-1: (1/2) ln(F C_p^-1 F^T).
+template <class T>
+KOKKOS_INLINE_FUNCTION PlaneSym<T> trialElasticStrain(const T F[2][2],
+                                                      const PlaneSym<double>& CpInv) {
+  return scaled(isotropicFunction<Logarithm>(congruence(F, CpInv)), 0.5);
+}
+
+// The plastic state after the return: C_p^-1 = F^-1 exp(2 eps_e) F^-T.
+template <class T>
+KOKKOS_INLINE_FUNCTION PlaneSym<T> plasticMetricOf(const T F[2][2], const PlaneSym<T>& epsE) {
+  const T J = F[0][0] * F[1][1] - F[0][1] * F[1][0];
+  T Finv[2][2];
+  inverseOf(F, J, Finv);
+  return congruence(Finv, isotropicFunction<Exponential>(scaled(epsE, 2.0)));
+}
+
 // The in-plane first Piola stress P = tau F^-T of a Kirchhoff stress.
 template <class T, class S>
 KOKKOS_INLINE_FUNCTION void piolaOfKirchhoff(const PlaneSym<T>& tau, const S Finv[2][2],

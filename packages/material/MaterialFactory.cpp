@@ -4,10 +4,11 @@
 
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
+#include "material/DruckerPragerLaw.hpp"
 #include "material/ElasticLaws1D.hpp"
 #include "material/FormulaLaw1D.hpp"
 #include "material/HenckyLaw.hpp"
-#include "material/J2Plasticity.hpp"
+#include "material/J2Law.hpp"
 #include "material/PlaneStrainLaws.hpp"
 #include "material/PlasticLaw1D.hpp"
 
@@ -39,7 +40,8 @@ std::vector<MaterialModel<2>>& registry<2>() {
       materialModel<PlaneStrainLaw<LinearElasticLaw>, 2>(),
       materialModel<PlaneStrainLaw<NeoHookeanLaw>, 2>(),
       materialModel<PlaneStrainLaw<HenckyLaw>, 2>(),
-      materialModel<J2PlaneStrain, 2>(),
+      materialModel<FiniteStrainPlasticity<J2Law>, 2>(),
+      materialModel<FiniteStrainPlasticity<DruckerPragerLaw>, 2>(),
   };
   return models;
 }

@@ -64,6 +64,9 @@ class Contribution {
   // what state() gave.
   virtual std::vector<double> state() const { return {}; }
   virtual void restore(const std::vector<double>& /*state*/) {}
+  // The name under which the force on this contribution's constrained unknowns (a support's
+  // reaction) is reported; empty: none reported.
+  virtual std::string reactionName() const { return ""; }
 };
 
 }  // namespace impm

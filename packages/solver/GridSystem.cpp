@@ -248,6 +248,41 @@ GridSystem<Dim>::trialState(const Vector& x) {
 }
 
 template <int Dim>
+Teuchos::RCP<Vector> GridSystem<Dim>::acceleration(const Vector& xOverlap) const {
+  if (inertia_.c0 == 0.0)
+    return Teuchos::null;
+  auto a = Teuchos::rcp(new Vector(dofs_.overlapMap()));
+  a->update(inertia_.c0, xOverlap, -1.0, *inertiaOverlap_, 0.0);
+  return a;
+}
+
+template <int Dim>
+void GridSystem<Dim>::assembleResidual(const Vector& x, Vector& residual) const {
+  IMPM_TIMER("residual");
+  auto xo = toOverlap(x);
+  const auto a = acceleration(*xo);
+  auto xHost = xo->getLocalViewHost(Tpetra::Access::ReadOnly);
+  FEMultiVector f(dofs_.ownedMap(), importer_, 1);
+  f.beginAssembly();
+  {
+    auto local = f.getLocalViewDevice(Tpetra::Access::ReadWrite);
+    addInternalForce<Dim>(particleGridMap_, entryDofs_, particles_, work_.Pn, local);
+    addExternalForce<Dim>(particleGridMap_, entryDofs_, particles_.force, loadFactor_, local);
+    if (a)
+      addInertiaForce<Dim>(inertia_.mass, particleGridMap_, entryDofs_, particles_.mass,
+                           a->getLocalViewDevice(Tpetra::Access::ReadOnly), local);
+  }
+  {
+    auto local = f.getLocalViewHost(Tpetra::Access::ReadWrite);
+    const HostValuesMutable fHost(local.data(), local.extent(0), local.extent(1));
+    for (std::size_t c = 0; c < contributions_.size(); ++c)
+      contributions_[c]->addResidual(context(static_cast<int>(c)), constHost(xHost), fHost);
+  }
+  f.endAssembly();
+  Tpetra::deep_copy(residual, *f.getVector(0));
+}
+
+template <int Dim>
 void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jacobian) {
   if (!frozen_) {
     updateStress(x);
@@ -255,37 +290,15 @@ void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jac
     updateStress(Vector(unknownMap()));  // the stress at the start of the step, du = 0
     frozenReady_ = true;
   }
-  auto xo = toOverlap(x);
-  Teuchos::RCP<Vector> acceleration;
-  if (inertia_.c0 != 0.0) {
-    acceleration = Teuchos::rcp(new Vector(dofs_.overlapMap()));
-    acceleration->update(inertia_.c0, *xo, -1.0, *inertiaOverlap_, 0.0);
-  }
-  auto xHost = xo->getLocalViewHost(Tpetra::Access::ReadOnly);
   if (residual) {
-    IMPM_TIMER("residual");
-    FEMultiVector f(dofs_.ownedMap(), importer_, 1);
-    f.beginAssembly();
-    {
-      auto local = f.getLocalViewDevice(Tpetra::Access::ReadWrite);
-      addInternalForce<Dim>(particleGridMap_, entryDofs_, particles_, work_.Pn, local);
-      addExternalForce<Dim>(particleGridMap_, entryDofs_, particles_.force, loadFactor_, local);
-      if (acceleration)
-        addInertiaForce<Dim>(inertia_.mass, particleGridMap_, entryDofs_, particles_.mass,
-                             acceleration->getLocalViewDevice(Tpetra::Access::ReadOnly), local);
-    }
-    {
-      auto local = f.getLocalViewHost(Tpetra::Access::ReadWrite);
-      const HostValuesMutable fHost(local.data(), local.extent(0), local.extent(1));
-      for (std::size_t c = 0; c < contributions_.size(); ++c)
-        contributions_[c]->addResidual(context(static_cast<int>(c)), constHost(xHost), fHost);
-    }
-    f.endAssembly();
-    Tpetra::deep_copy(*residual, *f.getVector(0));
+    assembleResidual(x, *residual);
     applyConstraints(x, residual, nullptr);
   }
   if (jacobian) {
     IMPM_TIMER("Jacobian");
+    auto xo = toOverlap(x);
+    const auto acceleration = this->acceleration(*xo);
+    auto xHost = xo->getLocalViewHost(Tpetra::Access::ReadOnly);
     auto& J = dynamic_cast<FECrsMatrix&>(*jacobian);
     J.beginAssembly();
     J.setAllToScalar(0.0);
@@ -359,6 +372,35 @@ Teuchos::RCP<CrsMatrix> GridSystem<Dim>::massMatrix(MassType type) const {
   }
   M->endAssembly();
   return M;
+}
+
+template <int Dim>
+std::vector<double> GridSystem<Dim>::supportForces(const Vector& x) {
+  if (!frozen_)
+    updateStress(x);  // the stress of the converged x (the trial state is unchanged)
+  Vector r(unknownMap());
+  assembleResidual(x, r);
+  auto values = r.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto& owned = *dofs_.ownedMap();
+  std::vector<double> local;
+  for (std::size_t c = 0; c < contributions_.size(); ++c) {
+    if (contributions_[c]->reactionName().empty())
+      continue;
+    std::vector<std::pair<GO, double>> rows;
+    contributions_[c]->constraints(context(static_cast<int>(c)), rows);
+    double sum = 0.0;  // r = f_int - f_ext (+ M a): what the support adds to balance it
+    for (const auto& row : rows) {
+      const LO lid = owned.getLocalElement(row.first);
+      if (lid != Teuchos::OrdinalTraits<LO>::invalid())
+        sum += values(lid, 0);
+    }
+    local.push_back(sum);
+  }
+  std::vector<double> global(local.size(), 0.0);
+  if (!local.empty())
+    Teuchos::reduceAll(*owned.getComm(), Teuchos::REDUCE_SUM, static_cast<int>(local.size()),
+                       local.data(), global.data());
+  return global;
 }
 
 template <int Dim>

@@ -71,6 +71,10 @@ class GridSystem : public ResidualModel {
   // The step converged at x: the contributions and the materials commit their state (after
   // trialState(x)).  Collective.
   void commit(const Vector& x);
+  // The force that each contribution reporting a reactionName() exerts on the bodies through
+  // its constrained unknowns at the converged x: the unconstrained residual f_int - f_ext
+  // (+ M a) summed over its rows, in the order of those contributions.  Collective.
+  std::vector<double> supportForces(const Vector& x);
   // The materials alone commit their trial state.
   void commitMaterials() { commitMaterialState(particles_, materials_, trial_); }
   // Evaluates the materials at x (their trial state); returns the trial F and P, views
@@ -85,6 +89,10 @@ class GridSystem : public ResidualModel {
 
  private:
   void updateStress(const Vector& x);
+  // c0 du - r on the overlap map in dynamic steps (the acceleration), null in static ones.
+  Teuchos::RCP<Vector> acceleration(const Vector& xOverlap) const;
+  // f_int - f_ext (+ M a) + the contributions' terms at x, without the constrained rows.
+  void assembleResidual(const Vector& x, Vector& residual) const;
   // Owned local index and prescribed increment of every constrained unknown.
   std::vector<std::pair<LO, double>> constrainedRows() const;
   // Rows of prescribed unknowns: residual scale (x_i - value), Jacobian row scale e_i.

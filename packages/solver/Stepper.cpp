@@ -56,6 +56,7 @@ void Stepper<Dim>::cutBack(const std::string& step, const std::string& logged,
 template <int Dim>
 void Stepper<Dim>::gridToParticles(GridSystem<Dim>& system, const Vector& du, double workScale) {
   auto& particles = setup_.particles;
+  supportForces_ = system.supportForces(du);  // before the particles move
   const auto uBefore = firstRows(uBefore_, "u before the step", particles.size());
   Kokkos::deep_copy(uBefore, particles.u);
   advanceParticles(system, du, setup_.kinematics, particles);
@@ -72,6 +73,7 @@ void Stepper<Dim>::accept(StepRecord& record, const StepGrid<Dim>& grid,
   record.strainEnergy = strainEnergy<Dim>(setup_.particles, setup_.materials, comm);
   record.dissipation = dissipatedEnergy<Dim>(setup_.particles, setup_.materials, comm);
   record.externalWork = state_.bodyWork + contributionWork<Dim>(setup_.contributions);
+  record.supportForces = supportForces_;
   state_.attempts = 0;
   state_.size = std::min(2 * size(), nominal_);  // grows back after a cutback
   if (state_.size >= nominal_)

@@ -51,7 +51,8 @@ class Stepper {
                const std::string& minimumParameter, const NewtonReport& report);
 
   // 3. Grid to particles and commit; the body forces' work over the step (times workScale,
-  // the mean load factor of a static step) is added.
+  // the mean load factor of a static step) is added, and the supports' reactions at the
+  // converged increment are kept for the step's record.
   void gridToParticles(GridSystem<Dim>& system, const Vector& du, double workScale);
 
   // 4. The step is accepted: fills the record's step, attempts and energies (the kinetic
@@ -66,6 +67,7 @@ class Stepper {
   double nominal_, minimum_;
   StepWorkspace<Dim> workspace_;
   typename ParticleSet<Dim>::Vectors uBefore_;  // kept from step to step, see firstRows
+  std::vector<double> supportForces_;           // of the step being accepted
 };
 
 }  // namespace impm

@@ -55,6 +55,8 @@ struct StepRecord {
   bool last = false;  // the run ends with this step
   NewtonReport newton;
   double kineticEnergy = 0.0, strainEnergy = 0.0, dissipation = 0.0, externalWork = 0.0;
+  // The reaction of every support that reports one (Contribution::reactionName), in order.
+  std::vector<double> supportForces;
 };
 
 // The grid solution of an accepted step, for output (vectors on system.unknownMap()).

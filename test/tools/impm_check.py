@@ -152,6 +152,7 @@ def uniform(args):
         print(r.stdout, r.stderr)
         sys.exit("impm failed")
     rows = read_csv(os.path.join(out, stem(args.deck) + "_particles.csv"))
+    history = read_csv(os.path.join(out, stem(args.deck) + "_history.csv"))
     shutil.rmtree(out)
     stresses = [c for c in args.columns if c.startswith("stress")]
     stress_scale = max(abs(float(p[c])) for p in rows for c in stresses) if stresses else 1.0
@@ -164,6 +165,15 @@ def uniform(args):
         if spread > args.rtol:
             failures.append("%s varies by %.2e over %d particles (allowed %g)"
                             % (c, spread, len(rows), args.rtol))
+    for name, width in args.reaction:
+        # The support's force on a y face of reference width W (negative W: the face whose
+        # outward normal is -y): sigma_yy F_xx W.
+        mean = lambda c: sum(float(p[c]) for p in rows) / len(rows)
+        expected = mean("stress_yy") * mean("F_xx") * float(width)
+        value = float(history[-1][name])
+        print("%s = %.15g, sigma_yy F_xx W = %.15g" % (name, value, expected))
+        if abs(value - expected) > args.rtol * 10 * abs(expected):
+            failures.append("%s = %.15g differs from sigma_yy F_xx W = %.15g" % (name, value, expected))
     for name, value in args.expect:
         mean = sum(float(p[name]) for p in rows) / len(rows)
         if abs(mean - float(value)) > args.rtol * max(1.0, abs(float(value))):
@@ -414,6 +424,9 @@ def main():
     u.add_argument("--columns", nargs="+", required=True)
     u.add_argument("--rtol", type=float, default=1e-12)
     u.add_argument("--expect", nargs=2, action="append", default=[], metavar=("COLUMN", "VALUE"))
+    u.add_argument("--reaction", nargs=2, action="append", default=[], metavar=("COLUMN", "WIDTH"),
+                   help="the history column of a support on a y face of reference width WIDTH "
+                        "must equal sigma_yy F_xx WIDTH at the last step")
     u.add_argument("--np", type=int, default=1)
     u.add_argument("--set", action="append", default=[])
 

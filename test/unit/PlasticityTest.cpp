@@ -322,6 +322,104 @@ TEST(J2PlaneStrain, InadmissibleParametersAreInputErrors) {
   }
 }
 
+// drucker-prager: cohesion 10, friction and dilation angles in degrees.
+std::shared_ptr<Material<2>> druckerPrager(double phi, double psi, double c = 10.0,
+                                           const std::string& cone = "plane strain") {
+  Teuchos::ParameterList p;
+  p.set("Model", std::string("drucker-prager"));
+  p.set("E", kE);
+  p.set("nu", kNu);
+  p.set("Cohesion", c);
+  p.set("Friction Angle", phi);
+  p.set("Dilation Angle", psi);
+  p.set("Cone", cone);
+  validateParameters(p, materialValidParameters());
+  return createMaterial<2>("m", p);
+}
+
+// The largest |A_abcd - A_cdab| relative to max |A| (major symmetry of the tangent).
+double asymmetry(const std::array<double, 16>& A) {
+  double worst = 0, scale = 0;
+  for (int k = 0; k < 16; ++k) {
+    const int ab = k / 4, cd = k % 4;
+    worst = std::max(worst, std::abs(A[k] - A[cd * 4 + ab]));
+    scale = std::max(scale, std::abs(A[k]));
+  }
+  return worst / scale;
+}
+
+TEST(DruckerPrager, TangentIsTheDerivativeOfTheReturnOnTheConeAndAtTheApex) {
+  const Matrix shear = {1.0, 0.03, 0.01, 0.985};    // compression and shear: the cone
+  const Matrix stretched = {1.02, 0.0, 0.0, 1.02};  // hydrostatic tension: the apex
+  for (double psi : {30.0, 10.0}) {
+    Point point(druckerPrager(30.0, psi), 9);
+    const double cone = tangentError(point, shear), apex = tangentError(point, stretched);
+    std::cout << "  drucker-prager phi 30, psi " << psi << ": tangent error on the cone " << cone
+              << ", at the apex " << apex << "\n";
+    EXPECT_LT(cone, 1e-7);
+    EXPECT_LT(apex, 1e-7);
+  }
+  Point elastic(druckerPrager(30.0, 30.0, 1e6), 9);
+  EXPECT_LT(tangentError(elastic, shear), 1e-7) << "elastic";
+}
+
+TEST(DruckerPrager, AssociatedTangentIsSymmetricAndNonAssociatedIsNot) {
+  const Matrix F = {1.0, 0.03, 0.01, 0.985};
+  Point associated(druckerPrager(30.0, 30.0), 1), nonAssociated(druckerPrager(30.0, 5.0), 1);
+  const double a = asymmetry(associated.evaluate({F}).A[0]);
+  const double b = asymmetry(nonAssociated.evaluate({F}).A[0]);
+  std::cout << "  asymmetry of A: associated " << a << ", non-associated " << b << "\n";
+  EXPECT_GT(associated.trial(1, 0), 0.0) << "the point must yield";
+  EXPECT_LT(a, 1e-9);
+  EXPECT_GT(b, 1e-3);
+}
+
+TEST(DruckerPrager, ReturnLandsOnTheConeOrItsApex) {
+  const double phi = 25.0, c = 10.0;
+  const double t = std::tan(phi * M_PI / 180), d = std::sqrt(9 + 12 * t * t);
+  const double eta = 3 * t / d, xi = 3 / d;
+  Point cone(druckerPrager(phi, 10.0, c), 1);
+  const Matrix F = {1.0, 0.03, 0.01, 0.985};
+  const Matrix tau = kirchhoff(cone.evaluate({F}).P[0], F);
+  // tau_zz from the elastic strain eps_zz = ln(C_p^-1 zz) / 2 (F_zz = 1), as in the j2 test.
+  const double k3 = 3 * kLambda + 2 * kMu, T2 = tau[0] + tau[3];
+  const double tauZZ =
+      (kLambda * T2 / k3 + 2 * kMu * 0.5 * std::log(cone.trial(0, 2))) / (1 - kLambda / k3);
+  const double p = (T2 + tauZZ) / 3;
+  const double sxx = tau[0] - p, syy = tau[3] - p, szz = tauZZ - p;
+  const double rootJ2 = std::sqrt(0.5 * (sxx * sxx + syy * syy + szz * szz + 2 * tau[1] * tau[1]));
+  ASSERT_GT(cone.trial(1, 0), 0.0);
+  EXPECT_NEAR(rootJ2 + eta * p - xi * c, 0.0, 1e-12 * c) << "on the cone";
+  Point apex(druckerPrager(phi, 10.0, c), 1);
+  const Matrix G = {1.02, 0.0, 0.0, 1.02};
+  const Matrix tauApex = kirchhoff(apex.evaluate({G}).P[0], G);
+  EXPECT_NEAR(tauApex[0], xi * c / eta, 1e-12 * c) << "at the apex";
+  EXPECT_NEAR(tauApex[3], xi * c / eta, 1e-12 * c);
+  EXPECT_NEAR(tauApex[1], 0.0, 1e-12 * c);
+}
+
+TEST(DruckerPrager, WithoutFrictionItIsJ2InPlaneStrain) {
+  // phi = psi = 0, plane-strain fit: sqrt(J2) <= c, that is q <= sqrt(3) c.
+  const double c = 10.0;
+  Point dp(druckerPrager(0.0, 0.0, c), 1), j2(planeStrainLaw("j2", std::sqrt(3.0) * c, 0.0), 1);
+  const Matrix F = {0.98, 0.05, -0.02, 0.9};
+  const auto a = dp.evaluate({F}), b = j2.evaluate({F});
+  ASSERT_GT(j2.trial(1, 0), 0.0);
+  for (int k = 0; k < 4; ++k)
+    EXPECT_NEAR(a.P[0][k], b.P[0][k], 1e-11 * kE);
+  for (int k = 0; k < 16; ++k)
+    EXPECT_NEAR(a.A[0][k], b.A[0][k], 1e-10 * kE);
+}
+
+TEST(DruckerPrager, InadmissibleParametersAreInputErrors) {
+  EXPECT_THROW(druckerPrager(20.0, 25.0), InputError) << "psi > phi";
+  EXPECT_THROW(druckerPrager(0.0, 0.0, 0.0), InputError) << "no strength at all";
+  EXPECT_THROW(druckerPrager(90.0, 0.0), InputError) << "phi = 90";
+  EXPECT_THROW(druckerPrager(-5.0, 0.0), InputError) << "phi < 0";
+  EXPECT_THROW(druckerPrager(20.0, 10.0, -1.0), InputError) << "c < 0";
+  EXPECT_THROW(druckerPrager(20.0, 10.0, 10.0, "middle"), InputError) << "unknown cone";
+}
+
 // j2-1d: the primer's bar law with a return map.
 std::shared_ptr<Material<1>> bar(double E, double yield, double H) {
   Teuchos::ParameterList p;
