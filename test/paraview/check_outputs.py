@@ -6,14 +6,17 @@ arrays; the displaced particle positions match the particle CSV; a PNG is render
 gimp and cpdi runs: the deformed particle domains of <prefix>_domains.exo, warped by their
 corner displacements).
 
-usage: pvbatch check_outputs.py OUTPUT_DIR PREFIX PNG [OUTPUT_EVERY]
+usage: pvbatch check_outputs.py OUTPUT_DIR PREFIX PNG [OUTPUT_EVERY [COLOUR [WIDTHxHEIGHT]]]
+(COLOUR: the element variable the picture is coloured by, stress_yy in 2-D by default;
+WIDTHxHEIGHT: the picture's size in pixels, 600x600 in 2-D by default)
 """
 
 import csv
 import os
 import sys
 
-from paraview.simple import (ColorBy, CreateView, GetDisplayProperties, MergeBlocks,
+from paraview.simple import (ColorBy, CreateView, GetColorTransferFunction,
+                             GetDisplayProperties, MergeBlocks,
                              OpenDataFile, Render, ResetCamera, SaveScreenshot, Show)
 from paraview import servermanager
 
@@ -79,7 +82,7 @@ for p in range(0, len(table), max(1, len(table) // 7)):
 shown, colour, representation = merged, "stress", "Points"
 domains_path = os.path.join(out_dir, prefix + "_domains.exo")
 if two_d:
-    colour = "stress_yy"
+    colour = sys.argv[5] if len(sys.argv) > 5 else "stress_yy"
     if os.path.exists(domains_path):
         _, domains_merged, domains, domain_times = fetch(domains_path)
         check(domains.GetNumberOfCells() == len(table) and domains.GetCellType(0) == 9,
@@ -89,14 +92,30 @@ if two_d:
         shown, representation = domains_merged, "Surface With Edges"
 
 view = CreateView("RenderView")
-view.ViewSize = [600, 600] if two_d else [800, 300]
+view.ViewSize = ([int(n) for n in sys.argv[6].split("x")] if len(sys.argv) > 6 else
+                 [600, 600] if two_d else [800, 300])
 view.ViewTime = times[-1]
 display = Show(shown, view)
 ColorBy(display, ("CELLS", colour))
 display.RescaleTransferFunctionToDataRange(True)
+if len(sys.argv) > 5:  # a chosen field: its range up to the 95th percentile, with a legend
+    values = sorted(float(p[colour]) for p in table if colour in p)
+    if values and values[int(0.95 * (len(values) - 1))] > values[0]:
+        GetColorTransferFunction(colour).RescaleTransferFunction(
+            values[0], values[int(0.95 * (len(values) - 1))])
+    display.SetScalarBarVisibility(view, True)
+    representation = "Surface"
 display.SetRepresentationType(representation)
 display.PointSize = 6
+view.CameraParallelProjection = 1 if two_d else 0
 ResetCamera(view)
+if two_d:  # fit the bodies (not their bounding sphere) to the picture
+    x0, x1, y0, y1, _, _ = servermanager.Fetch(shown).GetBounds()
+    width, height = view.ViewSize
+    view.CameraFocalPoint = [(x0 + x1) / 2, (y0 + y1) / 2, 0.0]
+    view.CameraPosition = [(x0 + x1) / 2, (y0 + y1) / 2, 10.0 * max(x1 - x0, y1 - y0)]
+    view.CameraViewUp = [0.0, 1.0, 0.0]
+    view.CameraParallelScale = 0.55 * max(y1 - y0, (x1 - x0) * height / width)
 Render(view)
 SaveScreenshot(png, view)
 check(os.path.getsize(png) > 1000, "the rendered picture is empty")

@@ -183,6 +183,29 @@ def uniform(args):
     sys.exit(1 if failures else 0)
 
 
+def energy(args):
+    """Runs a deck and checks its energy balance: the largest |energy_balance| (kinetic +
+    strain + dissipated - external work) over the largest external work, at any step."""
+    out = tempfile.mkdtemp(prefix="impm-energy-", dir=".")
+    r = run_impm(args, args.deck, out, ["Solver/Print Iterations=false"] + args.set, args.np)
+    if r.returncode != 0:
+        print(r.stdout, r.stderr)
+        sys.exit("impm failed")
+    history = read_csv(os.path.join(out, stem(args.deck) + "_history.csv"))
+    shutil.rmtree(out)
+    work = max(abs(float(h["external_work"])) for h in history)
+    imbalance = max(abs(float(h["energy_balance"])) for h in history) / work
+    last = history[-1]
+    print("external work %.6g = kinetic %.6g + strain %.6g + dissipation %.6g + imbalance %.6g; "
+          "largest imbalance %.3e of the work" % (
+              float(last["external_work"]), float(last["kinetic_energy"]),
+              float(last["strain_energy"]), float(last["dissipation"]),
+              -float(last["energy_balance"]), imbalance))
+    if imbalance > args.tolerance:
+        print("FAIL: energy balance %.3e above %g" % (imbalance, args.tolerance))
+        sys.exit(1)
+
+
 def unloading(args):
     """A homogeneous deck that unloads at its end: run it to its peak (--peak-set) and as
     written; between the two the response must be elastic: the Kirchhoff stress
@@ -430,6 +453,12 @@ def main():
     u.add_argument("--np", type=int, default=1)
     u.add_argument("--set", action="append", default=[])
 
+    e = sub.add_parser("energy")
+    e.add_argument("--deck", required=True)
+    e.add_argument("--tolerance", type=float, required=True)
+    e.add_argument("--np", type=int, default=1)
+    e.add_argument("--set", action="append", default=[])
+
     w = sub.add_parser("unloading")
     w.add_argument("--deck", required=True)
     w.add_argument("--peak-set", action="append", default=[], help="--set values of the peak run")
@@ -478,7 +507,7 @@ def main():
 
     args = p.parse_args()
     {"convergence": convergence, "ranks": ranks, "fails": fails, "docs": docs, "newton": newton,
-     "same": same, "uniform": uniform, "unloading": unloading}[args.check](args)
+     "same": same, "uniform": uniform, "unloading": unloading, "energy": energy}[args.check](args)
 
 
 if __name__ == "__main__":
