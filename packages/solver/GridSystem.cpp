@@ -9,6 +9,7 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -376,6 +377,10 @@ Teuchos::RCP<CrsMatrix> GridSystem<Dim>::massMatrix(MassType type) const {
 
 template <int Dim>
 std::vector<double> GridSystem<Dim>::supportForces(const Vector& x) {
+  const bool any = std::any_of(contributions_.begin(), contributions_.end(),
+                               [](const auto& c) { return !c->reactionName().empty(); });
+  if (!any)
+    return {};  // nothing to report: no extra residual evaluation
   if (!frozen_)
     updateStress(x);  // the stress of the converged x (the trial state is unchanged)
   Vector r(unknownMap());
