@@ -381,8 +381,7 @@ std::vector<double> GridSystem<Dim>::supportForces(const Vector& x) {
                                [](const auto& c) { return !c->reactionName().empty(); });
   if (!any)
     return {};  // nothing to report: no extra residual evaluation
-  if (!frozen_)
-    updateStress(x);  // the stress of the converged x (the trial state is unchanged)
+  // The stress is that of the last evaluation, Newton's at x: not evaluated again.
   Vector r(unknownMap());
   assembleResidual(x, r);
   auto values = r.getLocalViewHost(Tpetra::Access::ReadOnly);

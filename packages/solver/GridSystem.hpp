@@ -73,7 +73,9 @@ class GridSystem : public ResidualModel {
   void commit(const Vector& x);
   // The force that each contribution reporting a reactionName() exerts on the bodies through
   // its constrained unknowns at the converged x: the unconstrained residual f_int - f_ext
-  // (+ M a) summed over its rows, in the order of those contributions.  Collective.
+  // (+ M a) summed over its rows, in the order of those contributions.  It uses the stress
+  // of the last evaluation (Newton's last residual, at x; an explicit step's start-of-step
+  // stress), so call it before anything re-evaluates the materials.  Collective.
   std::vector<double> supportForces(const Vector& x);
   // The materials alone commit their trial state.
   void commitMaterials() { commitMaterialState(particles_, materials_, trial_); }

@@ -142,18 +142,25 @@ def check_field(args, errors):
     return failures
 
 
+def run_tables(args, sets, np, prefix):
+    """Runs the deck with the --set overrides in a fresh directory (iterations not printed)
+    and returns its particle table and history; exits with impm's output when it fails."""
+    out = tempfile.mkdtemp(prefix=prefix, dir=".")
+    r = run_impm(args, args.deck, out, ["Solver/Print Iterations=false"] + sets, np)
+    if r.returncode != 0:
+        print(r.stdout, r.stderr)
+        sys.exit("impm failed")
+    particles = read_csv(os.path.join(out, stem(args.deck) + "_particles.csv"))
+    history = read_csv(os.path.join(out, stem(args.deck) + "_history.csv"))
+    shutil.rmtree(out)
+    return particles, history
+
+
 def uniform(args):
     """The particle fields of a homogeneous deformation must be equal at every particle: the
     spread (max - min) of each column, relative to 1 for F and J and to the largest stress
     magnitude for stresses, must stay below --rtol."""
-    out = tempfile.mkdtemp(prefix="impm-uniform-", dir=".")
-    r = run_impm(args, args.deck, out, ["Solver/Print Iterations=false"] + args.set, args.np)
-    if r.returncode != 0:
-        print(r.stdout, r.stderr)
-        sys.exit("impm failed")
-    rows = read_csv(os.path.join(out, stem(args.deck) + "_particles.csv"))
-    history = read_csv(os.path.join(out, stem(args.deck) + "_history.csv"))
-    shutil.rmtree(out)
+    rows, history = run_tables(args, args.set, args.np, "impm-uniform-")
     stresses = [c for c in args.columns if c.startswith("stress")]
     stress_scale = max(abs(float(p[c])) for p in rows for c in stresses) if stresses else 1.0
     failures = []
@@ -186,13 +193,7 @@ def uniform(args):
 def energy(args):
     """Runs a deck and checks its energy balance: the largest |energy_balance| (kinetic +
     strain + dissipated - external work) over the largest external work, at any step."""
-    out = tempfile.mkdtemp(prefix="impm-energy-", dir=".")
-    r = run_impm(args, args.deck, out, ["Solver/Print Iterations=false"] + args.set, args.np)
-    if r.returncode != 0:
-        print(r.stdout, r.stderr)
-        sys.exit("impm failed")
-    history = read_csv(os.path.join(out, stem(args.deck) + "_history.csv"))
-    shutil.rmtree(out)
+    _, history = run_tables(args, args.set, args.np, "impm-energy-")
     work = max(abs(float(h["external_work"])) for h in history)
     imbalance = max(abs(float(h["energy_balance"])) for h in history) / work
     last = history[-1]
@@ -213,13 +214,7 @@ def unloading(args):
     uniaxial plane strain) and the plastic strain does not change."""
     means = []
     for sets in (args.peak_set, []):
-        out = tempfile.mkdtemp(prefix="impm-unload-", dir=".")
-        r = run_impm(args, args.deck, out, ["Solver/Print Iterations=false"] + sets, 1)
-        if r.returncode != 0:
-            print(r.stdout, r.stderr)
-            sys.exit("impm failed")
-        rows = read_csv(os.path.join(out, stem(args.deck) + "_particles.csv"))
-        shutil.rmtree(out)
+        rows, _ = run_tables(args, sets, 1, "impm-unload-")
         means.append({c: sum(float(p[c]) for p in rows) / len(rows)
                       for c in ("J", "stress_yy", "F_yy", args.plastic)})
     peak, end = means
