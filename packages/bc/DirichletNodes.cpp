@@ -1,7 +1,10 @@
 #include "bc/DirichletNodes.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
+#include "core/Collective.hpp"
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
 
@@ -79,34 +82,91 @@ double DirichletNodes<Dim>::prescribed(const double* x, double time, double load
 }
 
 template <int Dim>
+double DirichletNodes<Dim>::increment(const ContributionContext<Dim>& ctx, GlobalId node) const {
+  int idx[Dim];
+  grid_.nodeIndex(node, idx);
+  double x[Dim];
+  for (int d = 0; d < Dim; ++d)
+    x[d] = grid_.nodeCoord(d, idx[d]);
+  return prescribed(x, ctx.time, ctx.loadFactor) - prescribed(x, committedTime_, committedLoad_);
+}
+
+template <int Dim>
 void DirichletNodes<Dim>::constraints(const ContributionContext<Dim>& ctx,
                                       std::vector<std::pair<GO, double>>& out) const {
   for (const GlobalId node : ctx.dofs.ownedActiveNodes()) {
     int idx[Dim];
     grid_.nodeIndex(node, idx);
+    if (selects(idx))
+      out.emplace_back(ctx.dofs.nodeDof(node, component_), increment(ctx, node));
+  }
+}
+
+template <int Dim>
+double DirichletNodes<Dim>::reaction(const ContributionContext<Dim>& ctx, const HostValues& r) {
+  const auto& owned = *ctx.dofs.ownedMap();
+  std::vector<double> local;  // (node key, reaction, increment) of the nodes this rank owns
+  for (const GlobalId node : ctx.dofs.ownedActiveNodes()) {
+    int idx[Dim];
+    grid_.nodeIndex(node, idx);
     if (!selects(idx))
       continue;
-    double x[Dim];
-    for (int d = 0; d < Dim; ++d)
-      x[d] = grid_.nodeCoord(d, idx[d]);
-    out.emplace_back(
-        ctx.dofs.nodeDof(node, component_),
-        prescribed(x, ctx.time, ctx.loadFactor) - prescribed(x, committedTime_, committedLoad_));
+    const LO row = owned.getLocalElement(ctx.dofs.nodeDof(node, component_));
+    local.insert(local.end(),
+                 {static_cast<double>(node * Dim + component_), r(row, 0), increment(ctx, node)});
   }
+  // Every rank sums every node in the same (key) order: the work does not depend on the
+  // number of ranks beyond the reactions' own round-off.
+  const auto all = gatherToAll(*owned.getComm(), local);
+  std::vector<std::array<double, 3>> nodes(all.size() / 3);
+  for (std::size_t k = 0; k < nodes.size(); ++k)
+    nodes[k] = {all[3 * k], all[3 * k + 1], all[3 * k + 2]};
+  std::sort(nodes.begin(), nodes.end());
+  double total = 0.0, work = 0.0;
+  pendingForces_.clear();
+  auto before = forces_.begin();
+  for (const auto& [key, force, du] : nodes) {
+    while (before != forces_.end() && before->first < key)
+      ++before;
+    const double previous = before != forces_.end() && before->first == key ? before->second : 0.0;
+    total += force;
+    work += 0.5 * (previous + force) * du;
+    pendingForces_.emplace_back(key, force);
+  }
+  pendingWork_ = work_ + work;
+  pending_ = true;
+  return total;
 }
 
 template <int Dim>
 void DirichletNodes<Dim>::commit(const ContributionContext<Dim>& ctx, const HostValues& /*x*/) {
   committedTime_ = ctx.time;
   committedLoad_ = ctx.loadFactor;
+  if (pending_) {
+    forces_.swap(pendingForces_);
+    work_ = pendingWork_;
+    pending_ = false;
+  }
+}
+
+template <int Dim>
+std::vector<double> DirichletNodes<Dim>::state() const {
+  std::vector<double> state{committedTime_, committedLoad_, work_};
+  for (const auto& [key, force] : forces_)
+    state.insert(state.end(), {key, force});
+  return state;
 }
 
 template <int Dim>
 void DirichletNodes<Dim>::restore(const std::vector<double>& state) {
-  if (state.size() != 2)
-    throw std::invalid_argument("a Dirichlet condition's state has 2 values, not " +
+  if (state.size() < 3 || state.size() % 2 == 0)
+    throw std::invalid_argument("a Dirichlet condition's state has 3 + 2n values, not " +
                                 std::to_string(state.size()));
-  committedTime_ = state[0], committedLoad_ = state[1];
+  committedTime_ = state[0], committedLoad_ = state[1], work_ = state[2];
+  forces_.clear();
+  for (std::size_t k = 3; k < state.size(); k += 2)
+    forces_.emplace_back(state[k], state[k + 1]);
+  pending_ = false;
 }
 
 template class DirichletNodes<1>;

@@ -2,6 +2,8 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
+#include <algorithm>
+
 #include "core/Errors.hpp"
 
 namespace impm {
@@ -60,6 +62,22 @@ void collectively(const Comm& comm, const std::function<void()>& phase) {
 Teuchos::RCP<const Map> rootMap(GlobalId n, const Teuchos::RCP<const Comm>& comm) {
   const std::size_t local = comm->getRank() == 0 ? static_cast<std::size_t>(n) : 0;
   return Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(n), local, 0, comm));
+}
+
+std::vector<double> gatherToAll(const Comm& comm, const std::vector<double>& local) {
+  const int ranks = comm.getSize();
+  const int count = static_cast<int>(local.size());
+  std::vector<int> counts(ranks);
+  Teuchos::gatherAll(comm, 1, &count, ranks, counts.data());
+  const int widest = *std::max_element(counts.begin(), counts.end());
+  std::vector<double> padded(local), gathered(static_cast<std::size_t>(widest) * ranks);
+  padded.resize(widest);  // Teuchos gathers equal counts
+  if (widest)
+    Teuchos::gatherAll(comm, widest, padded.data(), widest * ranks, gathered.data());
+  std::vector<double> all;
+  for (int q = 0; q < ranks; ++q)
+    all.insert(all.end(), gathered.begin() + q * widest, gathered.begin() + q * widest + counts[q]);
+  return all;
 }
 
 }  // namespace impm

@@ -5,6 +5,7 @@
 // anywhere, throws the same error (the lowest failing rank's) on every rank.
 
 #include <functional>
+#include <vector>
 
 #include "core/TpetraTypes.hpp"
 #include "core/Types.hpp"
@@ -16,5 +17,8 @@ void collectively(const Comm& comm, const std::function<void()>& phase);
 // A map with every index 0..n-1 on rank 0 and none elsewhere: the target of an Import that
 // gathers a distributed vector to the rank that writes a file.
 Teuchos::RCP<const Map> rootMap(GlobalId n, const Teuchos::RCP<const Comm>& comm);
+
+// Every rank's values, concatenated in rank order, on every rank (counts may differ).
+std::vector<double> gatherToAll(const Comm& comm, const std::vector<double>& local);
 
 }  // namespace impm

@@ -47,6 +47,24 @@ void applyOverride(Teuchos::ParameterList& deck, const Override& o,
   list->setEntry(rest, entry);
 }
 
+// A parameter named "... File" names a file relative to the deck's directory (so that a deck
+// runs from any working directory); absolute names stay as they are.
+void resolveFileNames(Teuchos::ParameterList& list, const std::string& directory) {
+  const std::string suffix = " File";
+  for (auto it = list.begin(); it != list.end(); ++it) {
+    const std::string& name = list.name(it);
+    Teuchos::ParameterEntry& entry = list.getEntry(name);
+    if (entry.isList()) {
+      resolveFileNames(Teuchos::getValue<Teuchos::ParameterList>(entry), directory);
+    } else if (entry.isType<std::string>() && name.size() > suffix.size() &&
+               name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) {
+      const auto value = Teuchos::getValue<std::string>(entry);
+      if (!value.empty() && value[0] != '/')
+        entry.setValue(directory + "/" + value);
+    }
+  }
+}
+
 }  // namespace
 
 Override parseOverride(const std::string& text) {
@@ -62,6 +80,8 @@ Teuchos::ParameterList loadDeck(const std::string& file, const std::vector<Overr
   for (const auto& o : overrides)
     applyOverride(deck, o, valid);
   validateParameters(deck, valid);
+  const auto slash = file.find_last_of('/');
+  resolveFileNames(deck, slash == std::string::npos ? "." : file.substr(0, slash));
   return deck;
 }
 

@@ -18,6 +18,7 @@
 // increments d = eps_tr - eps_e, the dissipation tau : d.
 
 #include <cmath>
+#include <sstream>
 
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
@@ -60,10 +61,11 @@ struct DruckerPragerLaw {
   static Parameters read(const Teuchos::ParameterList& params, Lame lame, const std::string& path) {
     const double phi = params.get<double>("Friction Angle"),
                  psi = params.get<double>("Dilation Angle"), c = params.get<double>("Cohesion");
-    if (psi > phi)
-      throw InputError(path + "Dilation Angle", "the dilation angle " + std::to_string(psi) +
-                                                    " exceeds the friction angle " +
-                                                    std::to_string(phi));
+    if (psi > phi) {
+      std::ostringstream message;
+      message << "the dilation angle " << psi << " exceeds the friction angle " << phi;
+      throw InputError(path + "Dilation Angle", message.str());
+    }
     if (phi == 0.0 && c == 0.0)
       throw InputError(path + "Cohesion", "with a zero friction angle the cohesion must be > 0");
     const auto& cone = params.get<std::string>("Cone");

@@ -67,6 +67,13 @@ class Contribution {
   // The name under which the force on this contribution's constrained unknowns (a support's
   // reaction) is reported; empty: none reported.
   virtual std::string reactionName() const { return ""; }
+  // A converged step's force on those unknowns: r is the owned residual f_int - f_ext (+ M a)
+  // at the solution, which the support balances.  Returns the total (the same on every rank)
+  // and keeps what the work of the step needs until commit().  Collective; called only for
+  // contributions with a reactionName(), before commit().
+  virtual double reaction(const ContributionContext<Dim>& /*ctx*/, const HostValues& /*r*/) {
+    return 0.0;
+  }
 };
 
 }  // namespace impm

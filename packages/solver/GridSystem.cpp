@@ -385,26 +385,12 @@ std::vector<double> GridSystem<Dim>::supportForces(const Vector& x) {
   Vector r(unknownMap());
   assembleResidual(x, r);
   auto values = r.getLocalViewHost(Tpetra::Access::ReadOnly);
-  const auto& owned = *dofs_.ownedMap();
-  std::vector<double> local;
-  for (std::size_t c = 0; c < contributions_.size(); ++c) {
-    if (contributions_[c]->reactionName().empty())
-      continue;
-    std::vector<std::pair<GO, double>> rows;
-    contributions_[c]->constraints(context(static_cast<int>(c)), rows);
-    double sum = 0.0;  // r = f_int - f_ext (+ M a): what the support adds to balance it
-    for (const auto& row : rows) {
-      const LO lid = owned.getLocalElement(row.first);
-      if (lid != Teuchos::OrdinalTraits<LO>::invalid())
-        sum += values(lid, 0);
-    }
-    local.push_back(sum);
-  }
-  std::vector<double> global(local.size(), 0.0);
-  if (!local.empty())
-    Teuchos::reduceAll(*owned.getComm(), Teuchos::REDUCE_SUM, static_cast<int>(local.size()),
-                       local.data(), global.data());
-  return global;
+  std::vector<double> forces;
+  for (std::size_t c = 0; c < contributions_.size(); ++c)
+    if (!contributions_[c]->reactionName().empty())
+      forces.push_back(
+          contributions_[c]->reaction(context(static_cast<int>(c)), constHost(values)));
+  return forces;
 }
 
 template <int Dim>

@@ -349,9 +349,13 @@ def newton(args):
         if orders and last < args.min_order:
             failures.append("solve %d converged with order %.2f < %g" % (k + 1, last, args.min_order))
         if args.ratio_bound:
-            for j in range(len(useful) - 1):
-                ratio = useful[j + 1] / useful[j] ** 2
-                if j >= 1 and ratio > args.ratio_bound:
+            first = max(1, len(useful) - 1 - args.last) if args.last else 1
+            ratios = [useful[j + 1] / useful[j] ** 2 for j in range(first, len(useful) - 1)]
+            if args.last:
+                print("  r_(k+1)/r_k^2 over the last pairs: %s"
+                      % " ".join("%.2e" % v for v in ratios))
+            for j, ratio in enumerate(ratios, start=first):
+                if ratio > args.ratio_bound:
                     failures.append("solve %d: r_(k+1)/r_k^2 = %.2e at iteration %d" % (k + 1, ratio, j + 1))
     if not solves:
         failures.append("no Newton iterations in the log")
@@ -487,6 +491,9 @@ def main():
     n.add_argument("--ratio-bound", type=float, help="bound of r_(k+1) / r_k^2 (quadratic)")
     n.add_argument("--floor", type=float, default=1e-12,
                    help="residuals below this times the first are round-off")
+    n.add_argument("--last", type=int, default=0,
+                   help="bound the ratio over the last LAST pairs above the floor only (once "
+                        "the plastic zone has settled); 0: every pair after the first")
     n.add_argument("--np", type=int, default=1)
     n.add_argument("--set", action="append", default=[])
 

@@ -4,6 +4,7 @@
 #include <type_traits>
 
 #include "app/shapes/Disk.hpp"
+#include "app/shapes/Image.hpp"
 #include "app/shapes/Interval.hpp"
 #include "app/shapes/Polygon.hpp"
 #include "app/shapes/Rectangle.hpp"
@@ -42,10 +43,8 @@ Entry entry(const std::string& name) {
 // The registration lines: one per shape.
 const std::vector<Entry>& registry() {
   static const std::vector<Entry> shapes = {
-      entry<Interval>("interval"),
-      entry<Rectangle>("rectangle"),
-      entry<Disk>("disk"),
-      entry<Polygon>("polygon"),
+      entry<Interval>("interval"), entry<Rectangle>("rectangle"), entry<Disk>("disk"),
+      entry<Polygon>("polygon"),   entry<Image>("image"),
   };
   return shapes;
 }
@@ -58,7 +57,7 @@ void declareShapeParameters(Teuchos::ParameterList& valid) {
     names.push_back(e.name);
   declareChoice(valid, "Shape", "interval", names,
                 "Geometry of the body in the reference configuration: interval (1-D); "
-                "rectangle, disk or polygon (2-D)");
+                "rectangle, disk, polygon or image (2-D)");
   for (const auto& e : registry())
     e.declare(valid.sublist("[Shape=" + e.name + "]"));
 }
