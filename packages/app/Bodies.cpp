@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "app/shapes/ShapeFactory.hpp"
+#include "basis/CornerWeights.hpp"
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
 #include "core/Tensor.hpp"
@@ -185,6 +186,59 @@ int Bodies<Dim>::find(const std::string& name) const {
 }
 
 template <int Dim>
+bool Bodies<Dim>::hasCorners(Method method) const {
+  if (!isParticleMethod(method))
+    return false;
+  for (const auto& b : bodies_)
+    if (b.shape->hasCorners())
+      return true;
+  return false;
+}
+
+template <int Dim>
+void Bodies<Dim>::declareFields(ParticleSet<Dim>& particles, Method method) const {
+  if (!hasCorners(method))
+    return;
+  FieldSpec corners;
+  corners.name = kCornersField;
+  corners.shape = FieldShape::corners;
+  corners.doc = "2-D: the corners of the particle domain, counter-clockwise (mesh bodies)";
+  corners.columns = defaultColumns<Dim>("c", FieldShape::corners);
+  for (auto& c : corners.columns)
+    c.exodus.clear();  // drawn by the domain file, not element variables
+  FieldSpec reference = corners;
+  reference.name = kReferenceCornersField;
+  reference.doc = "2-D: the reference corners of the particle domain (mesh bodies)";
+  reference.columns = defaultColumns<Dim>("c0", FieldShape::corners);
+  for (auto& c : reference.columns)
+    c.exodus.clear();
+  FieldSpec faces;
+  faces.name = kFacesField;
+  faces.shape = FieldShape::faces;
+  faces.doc = "bit k set: the domain's face lies on side set k of its mesh";
+  for (const auto& spec : {corners, reference, faces})
+    particles.declare(spec);
+}
+
+namespace {
+
+// The reference corners of a seed, counter-clockwise: its own, or its parallelogram's
+// x -+ r_1 -+ r_2.
+template <int Dim>
+void seedCorners(const Seed<Dim>& seed, double corner[1 << Dim][Dim]) {
+  for (int c = 0; c < (1 << Dim); ++c) {
+    const int t = CornerWeights<Dim>::stored(c);  // stored <-> tensor: the same swap
+    for (int a = 0; a < Dim; ++a) {
+      corner[c][a] = seed.hasCorners ? seed.corner[c][a] : seed.x[a];
+      for (int k = 0; !seed.hasCorners && k < Dim; ++k)
+        corner[c][a] += CornerWeights<Dim>::sign(t, k) * seed.half[a][k];
+    }
+  }
+}
+
+}  // namespace
+
+template <int Dim>
 ParticleSet<Dim> Bodies<Dim>::createParticles(Method method,
                                               const Decomposition<Dim>& decomposition, int rank,
                                               const Materials<Dim>& materials,
@@ -208,7 +262,10 @@ ParticleSet<Dim> Bodies<Dim>::createParticles(Method method,
       ++nextId;
     }
   }
-  ParticleSet<Dim, Kokkos::DefaultHostExecutionSpace> ps(mine.size());
+  ParticleSet<Dim> particles(mine.size());
+  declareFields(particles, method);
+  const bool corners = particles.has(kCornersField);
+  auto ps = particles.mirror(Kokkos::DefaultHostExecutionSpace());
   for (std::size_t p = 0; p < mine.size(); ++p) {
     const Body<Dim>& b = bodies_[mine[p].body];
     const Seed<Dim>& seed = mine[p].seed;
@@ -249,12 +306,34 @@ ParticleSet<Dim> Bodies<Dim>::createParticles(Method method,
         ps.domain(p, a, k) = r;
       }
     }
+    if (corners)
+      placeCorners(ps, p, seed, F);
     for (int a = 0; a < Dim; ++a)
       ps.v(p, a) = b.velocity[a](arguments<Dim>(x, X, 0.0));
   }
-  ParticleSet<Dim> particles;
   particles.copyFrom(ps);
   return particles;
+}
+
+// x_c = x_p + F (X_c - X_p): the initial displacement is affine over the domain.
+template <int Dim>
+void Bodies<Dim>::placeCorners(const ParticleSet<Dim, Kokkos::DefaultHostExecutionSpace>& ps,
+                               std::size_t p, const Seed<Dim>& seed, const double F[Dim][Dim]) {
+  const auto& now = ps.values(kCornersField);
+  const auto& then = ps.values(kReferenceCornersField);
+  const auto& faces = ps.values(kFacesField);
+  double corner[1 << Dim][Dim];
+  seedCorners<Dim>(seed, corner);
+  for (int c = 0; c < (1 << Dim); ++c)
+    for (int a = 0; a < Dim; ++a) {
+      then(p, c * Dim + a) = corner[c][a];
+      double x = ps.x(p, a);
+      for (int b = 0; b < Dim; ++b)
+        x += F[a][b] * (corner[c][b] - seed.x[b]);
+      now(p, c * Dim + a) = x;
+    }
+  for (int f = 0; f < 2 * Dim; ++f)
+    faces(p, f) = seed.hasCorners ? seed.faces[f] : 0.0;
 }
 
 template <int Dim>

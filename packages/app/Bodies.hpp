@@ -54,6 +54,14 @@ class Bodies {
   ParticleSet<Dim> createParticles(Method method, const Decomposition<Dim>& decomposition, int rank,
                                    const Materials<Dim>& materials, bool displaced) const;
 
+  // Declares the fields of domains with corners (current and reference corners, side-set
+  // face masks) when a body comes from a mesh and the method has particles; every particle
+  // then carries corners (those of its parallelogram for the other bodies).  createParticles
+  // calls it; a restart calls it on the empty set the checkpoint fills.
+  void declareFields(ParticleSet<Dim>& particles, Method method) const;
+  // True when the particles carry corners (declareFields declares them).
+  bool hasCorners(Method method) const;
+
   // The initial displacement and velocity at node position x: those of the body that holds
   // x, or else of the nearest body (FEM's nodal initial conditions).
   void initialNodalState(const double* x, double* u, double* v) const;
@@ -66,6 +74,9 @@ class Bodies {
   void applyLoads(ParticleSet<Dim>& particles, double time) const;
 
  private:
+  static void placeCorners(const ParticleSet<Dim, Kokkos::DefaultHostExecutionSpace>& ps,
+                           std::size_t p, const Seed<Dim>& seed, const double F[Dim][Dim]);
+
   GridGeometry<Dim> grid_;
   std::vector<Body<Dim>> bodies_;
 };

@@ -45,6 +45,25 @@ std::shared_ptr<Contribution<1>> robinEnd(const std::string& name, const Teuchos
   return std::make_shared<RobinEnd>(name, p, at, kinematics);
 }
 
+// The bit of Side Set in the face masks of the body's particles, or -1 when it is empty.
+int sideSetBit(const Teuchos::ParameterList& p, const Shape<2>& shape, const std::string& path) {
+  const auto& name = p.get<std::string>("Side Set");
+  if (name.empty())
+    return -1;
+  const auto& sets = shape.sideSets();
+  for (std::size_t k = 0; k < sets.size(); ++k)
+    if (sets[k] == name) {
+      if (shape.edgesOn(static_cast<int>(k)) == 0)
+        throw InputError(path + "/Side Set", "side set '" + name + "' of " + shape.source() +
+                                                 " names no edge of body '" +
+                                                 p.get<std::string>("Body") + "'");
+      return static_cast<int>(k);
+    }
+  throw InputError(path + "/Side Set", "body '" + p.get<std::string>("Body") + "' " +
+                                           (shape.hasCorners() ? "(" + shape.source() + ") " : "") +
+                                           "has no side set '" + name + "'");
+}
+
 }  // namespace
 
 template <int Dim>
@@ -74,7 +93,8 @@ std::vector<std::shared_ptr<Contribution<Dim>>> createBoundaryConditions(
                            "points do not have: use mpm, gimp or cpdi");
         const auto shape = bodies.list()[b].shape;
         result.push_back(std::make_shared<EdgeTraction>(
-            name, p, b, [shape](const double* x) { return shape->contains(x); }, kinematics));
+            name, p, b, [shape](const double* x) { return shape->contains(x); },
+            sideSetBit(p, *shape, path), kinematics));
         continue;
       }
       throw InputError(path + "/Type",

@@ -179,7 +179,8 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
   for (const auto& c : all)
     if (c.field == "X" || c.field == "u" ||
         (domains_ != Domains::none &&
-         (c.field == "x" || c.field == "domain" || c.field == "domain0")))
+         (c.field == "x" || c.field == "domain" || c.field == "domain0" || c.field == "corners" ||
+          c.field == "corners0")))
       geometry.push_back(c);
   gathered_ = unionOf(all, {csvColumns_, exodusColumns_, geometry});
   // The particles are needed here only for the Exodus meshes.
@@ -275,29 +276,44 @@ namespace {
 // The columns that place the domain corners, looked up by name once per table (not once per
 // particle: a million particles made the lookups a visible part of the output phase).
 struct CornerColumns {
-  // isBox: gimp's axis-aligned domains, else cpdi's parallelograms.
-  CornerColumns(const ParticleTable& t, bool reference, bool isBox)
-      : cx(t.column(reference ? "X" : "x")),
-        cy(t.column(reference ? "Y" : "y")),
-        r1x(t.column(reference ? "r01_x" : "r1_x")),
-        r1y(t.column(reference ? "r01_y" : "r1_y")),
-        r2x(t.column(reference ? "r02_x" : "r2_x")),
-        r2y(t.column(reference ? "r02_y" : "r2_y")),
-        box(isBox) {}
+  // tracked: the corners c1 ... c4; box: gimp's axis-aligned domains; else cpdi's
+  // parallelograms.
+  CornerColumns(const ParticleTable& t, bool reference, bool isTracked, bool isBox)
+      : tracked(isTracked),
+        box(isBox),
+        centre{&t.column(reference ? "X" : "x"), &t.column(reference ? "Y" : "y")} {
+    const std::string r = reference ? "0" : "";
+    if (tracked) {
+      for (int k = 0; k < 4; ++k)
+        for (int d = 0; d < 2; ++d)
+          columns[2 * k + d] = &t.column("c" + r + std::to_string(k + 1) + (d ? "_y" : "_x"));
+      return;
+    }
+    for (int k = 0; k < 2; ++k)  // the half-vectors r1, r2
+      for (int d = 0; d < 2; ++d)
+        columns[2 * k + d] = &t.column("r" + r + std::to_string(k + 1) + (d ? "_y" : "_x"));
+  }
   // Counter-clockwise: (-,-), (+,-), (+,+), (-,+) in the half-vectors r1, r2.
   std::array<std::array<double, 2>, 4> operator()(std::size_t p) const {
-    double r1[2] = {r1x[p], r1y[p]}, r2[2] = {r2x[p], r2y[p]};
+    std::array<std::array<double, 2>, 4> out;
+    if (tracked) {
+      for (int k = 0; k < 4; ++k)
+        out[k] = {(*columns[2 * k])[p], (*columns[2 * k + 1])[p]};
+      return out;
+    }
+    double r1[2] = {(*columns[0])[p], (*columns[1])[p]},
+           r2[2] = {(*columns[2])[p], (*columns[3])[p]};
     if (box)  // gimp integrates over the box of half-widths r1_x, r2_y
       r1[1] = 0.0, r2[0] = 0.0;
-    std::array<std::array<double, 2>, 4> out;
     const double sign[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
     for (int k = 0; k < 4; ++k)
-      out[k] = {cx[p] + sign[k][0] * r1[0] + sign[k][1] * r2[0],
-                cy[p] + sign[k][0] * r1[1] + sign[k][1] * r2[1]};
+      out[k] = {(*centre[0])[p] + sign[k][0] * r1[0] + sign[k][1] * r2[0],
+                (*centre[1])[p] + sign[k][0] * r1[1] + sign[k][1] * r2[1]};
     return out;
   }
-  const std::vector<double>&cx, &cy, &r1x, &r1y, &r2x, &r2y;
-  bool box;
+  bool tracked, box;
+  const std::vector<double>* centre[2];
+  const std::vector<double>* columns[8] = {};
 };
 
 }  // namespace
@@ -309,7 +325,8 @@ ExodusMesh Output<Dim>::domainMesh(const ParticleTable& table) const {
   mesh.coords.resize(2);
   mesh.elementType = "QUAD4";
   mesh.nodesPerElement = 4;
-  const CornerColumns reference(table, true, domains_ == Domains::box);
+  const CornerColumns reference(table, true, domains_ == Domains::corners,
+                                domains_ == Domains::box);
   for (GlobalId p = 0; p < totalParticles_; ++p) {
     for (const auto& c : reference(p)) {
       mesh.coords[0].push_back(c[0]), mesh.coords[1].push_back(c[1]);
@@ -324,8 +341,8 @@ template <int Dim>
 std::vector<std::vector<double>> Output<Dim>::domainDisplacements(
     const ParticleTable& table) const {
   std::vector<std::vector<double>> u(2);
-  const bool box = domains_ == Domains::box;
-  const CornerColumns current(table, false, box), reference(table, true, box);
+  const bool tracked = domains_ == Domains::corners, box = domains_ == Domains::box;
+  const CornerColumns current(table, false, tracked, box), reference(table, true, tracked, box);
   for (GlobalId p = 0; p < totalParticles_; ++p) {
     const auto now = current(p), then = reference(p);
     for (int k = 0; k < 4; ++k)

@@ -78,8 +78,8 @@ template <int Dim>
 class Output {
  public:
   // The particle domains to draw: none, the box of half-widths r1_x, r2_y (gimp), the
-  // parallelogram spanned by r1, r2 (cpdi).
-  enum class Domains { none, box, parallelogram };
+  // parallelogram spanned by r1, r2 (cpdi), the tracked corners (mesh bodies).
+  enum class Domains { none, box, parallelogram, corners };
   // Creates the directory and the files (rank 0).  Collective.  The particle columns are
   // those of the fields of Output/Fields (outputColumns).
   Output(const Teuchos::ParameterList& params, const std::string& directory,

@@ -1,5 +1,7 @@
 #include "app/Simulation.hpp"
 
+#include "basis/CornerWeights.hpp"
+
 #include <Teuchos_CommHelpers.hpp>
 
 #include <cmath>
@@ -152,6 +154,7 @@ void Simulation<Dim>::restart(const std::string& file) {
   IMPM_TIMER("checkpoint read");
   // The particles the deck makes identified the problem; the checkpoint's replace them.
   particles_ = ParticleSet<Dim>();
+  bodies_->declareFields(particles_, method_);
   declareMaterialVariables(particles_, materials_);
   restored_ = std::make_unique<RunState<Dim>>(readCheckpoint<Dim>(
       file, identity_, ownership_->decomposition(), kinematics_ == Kinematics::totalLagrangian,
@@ -256,9 +259,10 @@ void Simulation<Dim>::printProgress(const StepRecord& r, const std::vector<doubl
 template <int Dim>
 std::unique_ptr<Output<Dim>> Simulation<Dim>::startOutput(const History<Dim>& history) {
   using Domains = typename Output<Dim>::Domains;
-  const Domains domains = method_ == Method::cpdi   ? Domains::parallelogram
-                          : method_ == Method::gimp ? Domains::box
-                                                    : Domains::none;
+  const Domains domains = particles_.has(kCornersField) ? Domains::corners
+                          : method_ == Method::cpdi     ? Domains::parallelogram
+                          : method_ == Method::gimp     ? Domains::box
+                                                        : Domains::none;
   particles_.updateDerived();
   const OutputResume resume{restored_ ? restored_->stepper.step : 0,
                             restored_ ? restored_->exodusSteps : 0};

@@ -14,6 +14,34 @@
 
 namespace impm {
 
+// The nodes a domain with corners touches: those of the cells that hold its corners (eq.
+// 1.40), found from weights.corner(p, c, g) (grid units, clipped).  False when the
+// particle's centre x(p) has left the grid.
+template <int Dim, class Vectors, class Weights>
+KOKKOS_INLINE_FUNCTION bool cornerNodeBox(const GridGeometry<Dim>& grid, const Vectors& x, int p,
+                                          int corners, const Weights& weights, int lo[Dim],
+                                          int hi[Dim], double tol) {
+  for (int d = 0; d < Dim; ++d) {
+    if (!centreInside(grid, d, grid.gridCoord(d, x(p, d)), tol))
+      return false;
+    lo[d] = grid.cells[d];
+    hi[d] = 0;
+  }
+  for (int c = 0; c < corners; ++c) {
+    double g[Dim];
+    weights.corner(p, c, g);
+    for (int d = 0; d < Dim; ++d) {
+      int cell = static_cast<int>(Kokkos::Experimental::floor(g[d]));
+      cell = cell < 0 ? 0 : (cell >= grid.cells[d] ? grid.cells[d] - 1 : cell);
+      if (cell < lo[d])
+        lo[d] = cell;
+      if (cell + 1 > hi[d])
+        hi[d] = cell + 1;
+    }
+  }
+  return true;
+}
+
 template <int Dim, class Space = DefaultExecSpace>
 struct CpdiWeights {
   static constexpr int kCorners = 1 << Dim;
@@ -37,25 +65,7 @@ struct CpdiWeights {
   }
 
   KOKKOS_INLINE_FUNCTION bool nodeBox(int p, int lo[Dim], int hi[Dim], double tol) const {
-    for (int d = 0; d < Dim; ++d) {
-      if (!centreInside(grid, d, grid.gridCoord(d, x(p, d)), tol))
-        return false;
-      lo[d] = grid.cells[d];
-      hi[d] = 0;
-    }
-    for (int c = 0; c < kCorners; ++c) {
-      double g[Dim];
-      corner(p, c, g);
-      for (int d = 0; d < Dim; ++d) {
-        int cell = static_cast<int>(Kokkos::Experimental::floor(g[d]));
-        cell = cell < 0 ? 0 : (cell >= grid.cells[d] ? grid.cells[d] - 1 : cell);
-        if (cell < lo[d])
-          lo[d] = cell;
-        if (cell + 1 > hi[d])
-          hi[d] = cell + 1;
-      }
-    }
-    return true;
+    return cornerNodeBox<Dim>(grid, x, p, kCorners, *this, lo, hi, tol);
   }
 
   KOKKOS_INLINE_FUNCTION void evaluate(int p, const int* /*lo*/, const int node[Dim], double& phi,

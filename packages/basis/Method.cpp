@@ -1,6 +1,7 @@
 #include "basis/Method.hpp"
 
 #include "basis/BuildMap.hpp"
+#include "basis/CornerWeights.hpp"
 #include "basis/CpdiWeights.hpp"
 #include "basis/GimpWeights.hpp"
 #include "basis/PointWeights.hpp"
@@ -35,6 +36,9 @@ ParticleGridMap<Dim, Space> buildParticleGridMap(Method method, const GridGeomet
     case Method::gimp:
       return buildParticleGridMap(GimpWeights<Dim, Space>(grid, particles), particles);
     case Method::cpdi:
+      if (particles.has(kCornersField))  // tracked corners: CPDI2 and CPTI
+        return buildParticleGridMap(
+            CornerWeights<Dim, Space>(grid, particles, particles.values(kCornersField)), particles);
       return buildParticleGridMap(CpdiWeights<Dim, Space>(grid, particles), particles);
   }
   throw std::logic_error("unhandled method");

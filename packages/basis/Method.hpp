@@ -27,7 +27,8 @@ inline bool isParticleMethod(Method m) {
   return m != Method::fem;
 }
 
-// Builds Y, phi_ip and G_ip for the given method.  Throws NumericalError naming the first
+// Builds Y, phi_ip and G_ip for the given method (cpdi: CPDI2 where the particles carry
+// corners, the field kCornersField).  Throws NumericalError naming the first
 // particle whose integration domain is outside the grid.
 template <int Dim, class Space = DefaultExecSpace>
 ParticleGridMap<Dim, Space> buildParticleGridMap(Method method, const GridGeometry<Dim>& grid,

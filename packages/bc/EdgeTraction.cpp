@@ -3,107 +3,203 @@
 #include <cmath>
 #include <sstream>
 
+#include "basis/CornerWeights.hpp"
 #include "basis/Tent.hpp"
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
 
 namespace impm {
 
+namespace {
+
+const char* const kFaces[2] = {"reference", "current"};
+
+// The corners of particle p's domain, counter-clockwise: in the reference configuration,
+// where the step's map was built (the tents are evaluated there), and at the start of the
+// step: the tracked corners, or the parallelogram X -+ r01 -+ r02 moved by x_p and F_p.
+struct DomainCorners {
+  double ref[4][2], map[4][2], start[4][2];
+};
+
+DomainCorners domainCorners(const ParticleSet<2, Kokkos::DefaultHostExecutionSpace>& host,
+                            std::size_t p, bool total) {
+  DomainCorners c;
+  if (host.has(kCornersField)) {
+    const auto& then = host.values(kReferenceCornersField);
+    const auto& now = host.values(kCornersField);
+    for (int k = 0; k < 4; ++k)
+      for (int d = 0; d < 2; ++d) {
+        c.ref[k][d] = then(p, 2 * k + d), c.start[k][d] = now(p, 2 * k + d);
+        c.map[k][d] = total ? c.ref[k][d] : c.start[k][d];
+      }
+    return c;
+  }
+  const double sign[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  for (int k = 0; k < 4; ++k) {
+    double half[2];
+    for (int d = 0; d < 2; ++d) {
+      half[d] = sign[k][0] * host.domain0(p, d, 0) + sign[k][1] * host.domain0(p, d, 1);
+      c.ref[k][d] = host.X(p, d) + half[d];
+    }
+    for (int d = 0; d < 2; ++d) {
+      c.start[k][d] = host.x(p, d) + host.F(p, d, 0) * half[0] + host.F(p, d, 1) * half[1];
+      c.map[k][d] = total ? c.ref[k][d] : c.start[k][d];
+    }
+  }
+  return c;
+}
+
+// Outward normal times length of the counter-clockwise edge a -> b.
+void edgeNormal(const double a[2], const double b[2], double n[2]) {
+  n[0] = b[1] - a[1], n[1] = a[0] - b[0];
+}
+
+}  // namespace
+
+bool EdgeTraction::hasBit(double mask, int bit) {
+  return (static_cast<long long>(mask) >> bit) & 1LL;
+}
+
 Teuchos::ParameterList EdgeTraction::validParameters() {
   Teuchos::ParameterList valid;
-  declareDoubleArray(valid, "Region", {0.0, 1.0, 1.0, 1.0}, {4},
+  declareDoubleArray(valid, "Region", {-1e300, 1e300, -1e300, 1e300}, {4},
                      "2-D: xmin, xmax, ymin, ymax of the box holding the loaded part of the "
-                     "boundary, in the reference configuration (edges included)",
-                     Bounds::any(), true);
+                     "boundary, in the reference configuration (edges included); default: "
+                     "everywhere",
+                     Bounds::any());
+  declareString(valid, "Side Set", "",
+                "2-D: a side set of the body's mesh (its name, or its id where the file names "
+                "none): the loaded faces; empty: the faces exposed to empty space in Region");
   for (const char* c : {"x", "y"})
     declareFormula(valid, std::string("Traction ") + c, "0", {"x", "y", "t"},
                    std::string("2-D: ") + c +
                        " component of the traction, force per unit "
                        "reference length (a dead load), a formula of the reference position x, y "
                        "and time t; ramped with the load factor in static load steps");
+  declareFormula(valid, "Pressure", "0", {"x", "y", "t"},
+                 "2-D: pressure on the faces (positive: pushing into the body), a formula of the "
+                 "reference position x, y and time t; ramped with the load factor in static load "
+                 "steps");
+  declareChoice(valid, "Pressure Face", "reference", {kFaces[0], kFaces[1]},
+                "2-D: the face whose normal and length the pressure acts on: reference (a dead "
+                "load) or current (a follower load, the face as it is at the start of each "
+                "step)");
   return valid;
 }
 
 EdgeTraction::EdgeTraction(const std::string& name, const Teuchos::ParameterList& params, int body,
-                           std::function<bool(const double*)> inside, Kinematics kinematics)
-    : name_(name), body_(body), inside_(std::move(inside)), kinematics_(kinematics) {
+                           std::function<bool(const double*)> inside, int sideSet,
+                           Kinematics kinematics)
+    : name_(name),
+      body_(body),
+      inside_(std::move(inside)),
+      sideSet_(sideSet),
+      kinematics_(kinematics) {
   const std::string path = "Boundary Conditions/" + name + "/";
   const auto& region = params.get<Teuchos::Array<double>>("Region");
   for (int k = 0; k < 4; ++k)
     box_[k] = region[k];
   if (!(box_[0] <= box_[1] && box_[2] <= box_[3]))
     throw InputError(path + "Region", "needs xmin <= xmax and ymin <= ymax");
-  const char* components[2] = {"x", "y"};
-  for (int a = 0; a < 2; ++a) {
-    const std::string p = std::string("Traction ") + components[a];
+  const auto formula = [&](const std::string& p) {
     try {
-      traction_[a] = Formula(formulaText(params, p), {"x", "y", "t"});
+      return Formula(formulaText(params, p), {"x", "y", "t"});
     } catch (const InputError& e) {
       throw InputError(path + p, e.what());
     }
-  }
+  };
+  traction_ = {formula("Traction x"), formula("Traction y")};
+  pressure_ = formula("Pressure");
+  currentFace_ = params.get<std::string>("Pressure Face") == kFaces[1];
 }
 
-void EdgeTraction::addResidual(const ContributionContext<2>& ctx, const HostValues& /*x*/,
+void EdgeTraction::faceForce(const double mid[2], const double refNormal[2],
+                             const double nowNormal[2], double length0, double time,
+                             double force[2]) const {
+  const double p = pressure_(mid[0], mid[1], time);
+  const double* n = currentFace_ ? nowNormal : refNormal;
+  for (int a = 0; a < 2; ++a)
+    force[a] = traction_[a](mid[0], mid[1], time) * length0 - p * n[a];
+}
+
+// f(overlap index of component a, a, N_i) for the grid nodes around a face's end at `at`
+// (where the step's map was built); throws when the map does not reach a node.
+template <class Fn>
+void forEachEndNode(const ContributionContext<2>& ctx, const double at[2], GlobalId particle,
+                    const std::string& name, Fn&& f) {
+  const auto& grid = ctx.grid;
+  double g[2];
+  int cell[2];
+  for (int d = 0; d < 2; ++d) {
+    g[d] = clipToGrid(grid, d, grid.gridCoord(d, at[d]));
+    cell[d] = std::min(grid.cells[d] - 1, std::max(0, static_cast<int>(std::floor(g[d]))));
+  }
+  for (int j = 0; j <= 1; ++j)
+    for (int i = 0; i <= 1; ++i) {
+      const int node[2] = {cell[0] + i, cell[1] + j};
+      const double N = tent(g[0] - node[0]) * tent(g[1] - node[1]);
+      if (N == 0.0)
+        continue;
+      const GlobalId nodeId = grid.nodeId(node);
+      for (int a = 0; a < 2; ++a) {
+        const LO lid = ctx.dofs.overlapMap()->getLocalElement(ctx.dofs.nodeDof(nodeId, a));
+        if (lid == Teuchos::OrdinalTraits<LO>::invalid()) {
+          std::ostringstream msg;
+          msg << "Boundary Conditions/" << name << ": a loaded face of particle " << particle
+              << " reaches grid node " << nodeId
+              << ", which no integration point reaches (use gimp or cpdi)";
+          throw NumericalError(msg.str());
+        }
+        f(lid, a, N);
+      }
+    }
+}
+
+bool EdgeTraction::loaded(const HostParticles& host, std::size_t p, int k, const double mid[2],
+                          const double n0[2]) const {
+  const double tol = 1e-9;
+  if (mid[0] < box_[0] - tol || mid[0] > box_[1] + tol || mid[1] < box_[2] - tol ||
+      mid[1] > box_[3] + tol)
+    return false;
+  if (sideSet_ >= 0)
+    return hasBit(host.values(kFacesField)(p, k), sideSet_);
+  const double beyond[2] = {mid[0] + 1e-6 * n0[0], mid[1] + 1e-6 * n0[1]};
+  return !inside_(beyond);
+}
+
+void EdgeTraction::addResidual(const ContributionContext<2>& ctx, const HostValues& x,
                                const HostValuesMutable& f) const {
   const auto host = ctx.particles.mirror(Kokkos::DefaultHostExecutionSpace());
-  const auto& body = host.body;
-  const auto& id = host.id;
-  const auto& X = host.X;
-  const auto& r0 = host.domain0;
   const bool total = kinematics_ == Kinematics::totalLagrangian;
-  const auto& xs = total ? host.X : host.x;  // where the faces are during the step
-  const auto& rs = total ? host.domain0 : host.domain;
-  const auto& grid = ctx.grid;
-  const auto& overlap = *ctx.dofs.overlapMap();
-  const double tol = 1e-9;
   for (std::size_t p = 0; p < host.size(); ++p) {
-    if (body(p) != body_)
+    if (host.body(p) != body_)
       continue;
-    for (int k = 0; k < 2; ++k)  // faces +-r_k; the other half-vector spans the face
-      for (const double s : {-1.0, 1.0}) {
-        const int o = 1 - k;
-        double mid[2], beyond[2];
-        for (int d = 0; d < 2; ++d) {
-          mid[d] = X(p, d) + s * r0(p, d, k);
-          beyond[d] = mid[d] + 1e-6 * s * r0(p, d, k);
-        }
-        if (mid[0] < box_[0] - tol || mid[0] > box_[1] + tol || mid[1] < box_[2] - tol ||
-            mid[1] > box_[3] + tol || inside_(beyond))
-          continue;
-        const double length = 2.0 * std::hypot(r0(p, 0, o), r0(p, 1, o));
-        double t[2];
-        for (int a = 0; a < 2; ++a)
-          t[a] = ctx.loadFactor * traction_[a](mid[0], mid[1], ctx.time);
-        for (const double c : {-1.0, 1.0}) {  // the face's two corners, now
-          double g[2];
-          for (int d = 0; d < 2; ++d)
-            g[d] = clipToGrid(grid, d,
-                              grid.gridCoord(d, xs(p, d) + s * rs(p, d, k) + c * rs(p, d, o)));
-          int cell[2];
-          for (int d = 0; d < 2; ++d)
-            cell[d] = std::min(grid.cells[d] - 1, std::max(0, static_cast<int>(std::floor(g[d]))));
-          for (int j = 0; j <= 1; ++j)
-            for (int i = 0; i <= 1; ++i) {
-              const int node[2] = {cell[0] + i, cell[1] + j};
-              const double N = tent(g[0] - node[0]) * tent(g[1] - node[1]);
-              if (N == 0.0)
-                continue;
-              const GlobalId nodeId = grid.nodeId(node);
-              for (int a = 0; a < 2; ++a) {
-                const LO lid = overlap.getLocalElement(ctx.dofs.nodeDof(nodeId, a));
-                if (lid == Teuchos::OrdinalTraits<LO>::invalid()) {
-                  std::ostringstream msg;
-                  msg << "Boundary Conditions/" << name_ << ": a loaded face of particle " << id(p)
-                      << " reaches grid node " << nodeId
-                      << ", which no integration point reaches (use gimp or cpdi)";
-                  throw NumericalError(msg.str());
-                }
-                f(lid, 0) -= t[a] * length * 0.5 * N;
-              }
-            }
-        }
+    const DomainCorners c = domainCorners(host, p, total);
+    for (int k = 0; k < 4; ++k) {
+      const int ends[2] = {k, (k + 1) % 4};
+      const double *a0 = c.ref[ends[0]], *b0 = c.ref[ends[1]];
+      double n0[2];
+      edgeNormal(a0, b0, n0);
+      const double length0 = std::hypot(n0[0], n0[1]);
+      const double mid[2] = {0.5 * (a0[0] + b0[0]), 0.5 * (a0[1] + b0[1])};
+      if (length0 == 0.0 || !loaded(host, p, k, mid, n0))  // 0: a triangle's collapsed edge
+        continue;
+      // The face now: its ends at the start of the step moved by this iterate's increment.
+      double now[2][2];
+      for (int e = 0; e < 2; ++e) {
+        for (int d = 0; d < 2; ++d)
+          now[e][d] = c.start[ends[e]][d];
+        forEachEndNode(ctx, c.map[ends[e]], host.id(p), name_,
+                       [&](LO lid, int a, double N) { now[e][a] += N * x(lid, 0); });
       }
+      double n[2], force[2];
+      edgeNormal(now[0], now[1], n);
+      faceForce(mid, n0, n, length0, ctx.time, force);
+      for (int e = 0; e < 2; ++e)
+        forEachEndNode(ctx, c.map[ends[e]], host.id(p), name_, [&](LO lid, int a, double N) {
+          f(lid, 0) -= ctx.loadFactor * force[a] * 0.5 * N;
+        });
+    }
   }
 }
 

@@ -1,21 +1,28 @@
 #pragma once
-// A traction on part of a 2-D body's boundary: a dead load t (force per unit reference
-// length, plane strain per unit thickness) on the particle-domain faces that lie on the
-// body's boundary inside a box.  Each such face, with reference length L0 and corners c1,
-// c2 (the CPDI corners x_p +- r_1 +- r_2; for mpm, gimp and fem the same parallelogram of
-// the particle's domain), adds
-//   f_i -= lambda t L0 (N_i(c1) + N_i(c2)) / 2,
-// the trapezoidal rule of the integral of N_i t over the face, exact for the tents, which
-// are linear along a face on a grid line.  lambda is the load factor of static load steps.
-// The faces are found in the reference configuration: a face is on the boundary when the
-// point just beyond its midpoint is outside the body's shape.
+// A load on part of a 2-D body's boundary, on the faces of the particle domains that lie on
+// it: a dead traction t (force per unit reference length, plane strain per unit thickness)
+// and a pressure p against the face's outward normal, per unit length of the reference or
+// of the current face.  A face of a domain (corners c1, c2, counter-clockwise: the tracked
+// corners of a mesh element, or the parallelogram x_p -+ r_1 -+ r_2) adds
+//   f_i -= lambda (t L0 - p n L) (N_i(c1) + N_i(c2)) / 2,
+// the trapezoidal rule of the integral of N_i over the face, which is the integral of the
+// alternative basis of CPDI (linear between the corners) and exact for the tents on a face
+// along a grid line.  lambda is the load factor of static load steps; n L is the outward
+// normal times the length of the reference face or of the current face, at the Newton
+// iterate (a follower load: its derivative is left out of the Jacobian, so Newton converges
+// linearly, at a rate of about p / E, instead of quadratically).
+//
+// The loaded faces are either those of a side set of a mesh body (the bit of the particle's
+// face mask), or the exposed faces inside a box: a face is exposed when the point just beyond
+// its midpoint is outside the body's shape (an image body's stair-stepped boundary next to
+// empty pixels).  Both are found in the reference configuration.
 
 #include <Teuchos_ParameterList.hpp>
 
 #include <array>
+#include <functional>
 #include <string>
 
-#include <functional>
 #include "assembly/Kinematics.hpp"
 #include "core/Formula.hpp"
 #include "solver/Contribution.hpp"
@@ -27,20 +34,32 @@ class EdgeTraction : public Contribution<2> {
   static Teuchos::ParameterList validParameters();
 
   // body: index of the body the traction acts on; inside: whether a point lies in the
-  // body's reference shape.
+  // body's reference shape; sideSet: the bit of the side set to load, or -1 (exposed faces).
   EdgeTraction(const std::string& name, const Teuchos::ParameterList& params, int body,
-               std::function<bool(const double*)> inside, Kinematics kinematics);
+               std::function<bool(const double*)> inside, int sideSet, Kinematics kinematics);
 
   void addResidual(const ContributionContext<2>& ctx, const HostValues& x,
                    const HostValuesMutable& f) const override;
 
  private:
+  using HostParticles = ParticleSet<2, Kokkos::DefaultHostExecutionSpace>;
+  static bool hasBit(double mask, int bit);
+  // Whether face k of particle p, with reference midpoint mid and outward normal n0, is loaded.
+  bool loaded(const HostParticles& host, std::size_t p, int k, const double mid[2],
+              const double n0[2]) const;
+  // The face's load (force on the whole face) at reference midpoint mid.
+  void faceForce(const double mid[2], const double refNormal[2], const double nowNormal[2],
+                 double length0, double time, double force[2]) const;
+
   std::string name_;
   int body_;
   std::function<bool(const double*)> inside_;
+  int sideSet_;
   Kinematics kinematics_;
   std::array<double, 4> box_;
   std::array<Formula, 2> traction_;
+  Formula pressure_;
+  bool currentFace_ = false;
 };
 
 }  // namespace impm

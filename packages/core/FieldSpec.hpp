@@ -12,8 +12,10 @@ namespace impm {
 // scalar: 1 component; vector: Dim; tensor: Dim x Dim, row-major (a, b) at a * Dim + b;
 // symmetric3x3: the 6 independent components of a symmetric 3 x 3 tensor (the elastic left
 // Cauchy-Green tensor of plane-strain plasticity has an out-of-plane part) in the order
-// xx, yy, zz, xy, yz, xz.
-enum class FieldShape { scalar, vector, tensor, symmetric3x3 };
+// xx, yy, zz, xy, yz, xz.  corners: the 2^Dim corners of a particle domain, component
+// c * Dim + d, counter-clockwise in 2-D; faces: one value per face (2-D: edge k from corner k
+// to corner k + 1).
+enum class FieldShape { scalar, vector, tensor, symmetric3x3, corners, faces };
 
 template <int Dim>
 constexpr int componentCount(FieldShape shape) {
@@ -26,6 +28,10 @@ constexpr int componentCount(FieldShape shape) {
       return Dim * Dim;
     case FieldShape::symmetric3x3:
       return 6;
+    case FieldShape::corners:
+      return (1 << Dim) * Dim;
+    case FieldShape::faces:
+      return 2 * Dim;
   }
   return 0;
 }
@@ -55,7 +61,7 @@ struct FieldSpec {
 // The default columns of a field: `name` (scalars; vectors and tensors in 1-D); name_x,
 // name_y for 2-D vectors (Exodus: nameX, nameY, which ParaView groups into a vector);
 // name_xx, name_xy, ... for tensors; name_xx, name_yy, name_zz, name_xy, name_yz, name_xz
-// for symmetric 3 x 3 tensors.
+// for symmetric 3 x 3 tensors; name1_x, name1_y, ... for corners; name_1, ... for faces.
 template <int Dim>
 std::vector<OutputColumn> defaultColumns(const std::string& name, FieldShape shape);
 

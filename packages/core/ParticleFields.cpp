@@ -48,6 +48,17 @@ std::vector<OutputColumn> defaultColumns(const std::string& name, FieldShape sha
         out.push_back({c, name + "_" + pairs[c], name + "_" + pairs[c]});
       break;
     }
+    case FieldShape::corners:
+      for (int c = 0; c < (1 << Dim); ++c)
+        for (int d = 0; d < Dim; ++d) {
+          const std::string n = name + std::to_string(c + 1) + "_" + kAxes[d];
+          out.push_back({c * Dim + d, n, n});
+        }
+      break;
+    case FieldShape::faces:
+      for (int f = 0; f < 2 * Dim; ++f)
+        out.push_back({f, name + "_" + std::to_string(f + 1), name + "_" + std::to_string(f + 1)});
+      break;
   }
   return out;
 }

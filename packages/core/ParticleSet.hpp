@@ -92,6 +92,10 @@ class ParticleSet {
   const FieldSpec& spec(const std::string& name) const;
   // The values of a declared field.
   const Table& values(const std::string& name) const;
+  // Makes the declared field `name` of this set show `values` (of the same shape): a shallow
+  // copy of a set seen in another configuration (the reference corners for the map of
+  // total-Lagrangian kinematics).
+  void replaceValues(const std::string& name, const Table& values);
   // Every field's specification, in registry order.
   std::vector<FieldSpec> specs() const;
 
@@ -264,6 +268,18 @@ const typename ParticleSet<Dim, Space>::Table& ParticleSet<Dim, Space>::values(
   for (const auto& d : declared_)
     if (d.spec.name == name)
       return d.values;
+  throw std::out_of_range("no declared particle field '" + name + "'");
+}
+
+template <int Dim, class Space>
+void ParticleSet<Dim, Space>::replaceValues(const std::string& name, const Table& values) {
+  for (auto& d : declared_)
+    if (d.spec.name == name) {
+      if (values.extent(0) != d.values.extent(0) || values.extent(1) != d.values.extent(1))
+        throw std::logic_error("replaceValues: '" + name + "' of another shape");
+      d.values = values;
+      return;
+    }
   throw std::out_of_range("no declared particle field '" + name + "'");
 }
 

@@ -3,6 +3,7 @@
 #include "assembly/EntryDofs.hpp"
 #include "assembly/Forces.hpp"
 #include "assembly/Graph.hpp"
+#include "basis/CornerWeights.hpp"
 #include "core/Collective.hpp"
 #include "core/Errors.hpp"
 #include "core/Timers.hpp"
@@ -39,8 +40,11 @@ ParticleGridMap<Dim> buildMapCollectively(const NodeOwnership<Dim>& ownership, M
                                           Kinematics kinematics,
                                           const ParticleSet<Dim>& particles) {
   ParticleSet<Dim> at = particles;  // views: a shallow copy
-  if (kinematics == Kinematics::totalLagrangian)
+  if (kinematics == Kinematics::totalLagrangian) {
     at.x = particles.X, at.domain = particles.domain0;
+    if (particles.has(kCornersField))
+      at.replaceValues(kCornersField, particles.values(kReferenceCornersField));
+  }
   IMPM_TIMER("particle-grid map");
   ParticleGridMap<Dim> map;
   collectively(*ownership.comm(),

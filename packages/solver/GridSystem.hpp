@@ -84,6 +84,7 @@ class GridSystem : public ResidualModel {
   std::pair<typename ParticleSet<Dim>::Tensors, typename ParticleSet<Dim>::Tensors> trialState(
       const Vector& x);
 
+  const GridGeometry<Dim>& grid() const { return grid_; }
   const ParticleGridMap<Dim>& particleGridMap() const { return particleGridMap_; }
   const EntryDofs<>& entryDofs() const { return entryDofs_; }
   const DofMap<Dim>& dofs() const { return dofs_; }

@@ -1,5 +1,6 @@
 #include "solver/ParticleAdvance.hpp"
 
+#include "assembly/CornerMotion.hpp"
 #include "assembly/ParticleUpdate.hpp"
 #include "core/Timers.hpp"
 
@@ -11,8 +12,11 @@ void advanceParticles(GridSystem<Dim>& system, const Vector& du, Kinematics kine
   IMPM_TIMER("particle update");
   const auto [F, P] = system.trialState(du);
   auto duOverlap = system.toOverlap(du);
-  updateParticles<Dim>(kinematics, system.particleGridMap(), system.entryDofs(),
-                       duOverlap->getLocalViewDevice(Tpetra::Access::ReadOnly), F, P, particles);
+  const auto values = duOverlap->getLocalViewDevice(Tpetra::Access::ReadOnly);
+  updateParticles<Dim>(kinematics, system.particleGridMap(), system.entryDofs(), values, F, P,
+                       particles);
+  moveCorners<Dim>(kinematics, system.grid(), system.particleGridMap(), system.entryDofs(), values,
+                   particles);
 }
 
 template void advanceParticles<1>(GridSystem<1>&, const Vector&, Kinematics, ParticleSet<1>&);

@@ -181,6 +181,12 @@ def uniform(args):
         print("%s = %.15g, sigma_yy F_xx W = %.15g" % (name, value, expected))
         if abs(value - expected) > args.rtol * 10 * abs(expected):
             failures.append("%s = %.15g differs from sigma_yy F_xx W = %.15g" % (name, value, expected))
+    if args.total_volume is not None:
+        total = sum(float(p["volume"]) for p in rows)
+        print("total volume %.15g, expected %.15g" % (total, args.total_volume))
+        if abs(total - args.total_volume) > args.rtol * abs(args.total_volume):
+            failures.append("the particle volumes sum to %.15g, expected %.15g"
+                            % (total, args.total_volume))
     for name, value in args.expect:
         mean = sum(float(p[name]) for p in rows) / len(rows)
         if abs(mean - float(value)) > args.rtol * max(1.0, abs(float(value))):
@@ -188,6 +194,33 @@ def uniform(args):
     for f in failures:
         print("FAIL:", f)
     sys.exit(1 if failures else 0)
+
+
+def translation(args):
+    """A rigid translation at velocity V: at the last step every particle and every tracked
+    domain corner (columns c<k>_x, c<k>_y against c0<k>_x, c0<k>_y) has moved by V t, to
+    --atol."""
+    rows, history = run_tables(args, args.set, args.np, "impm-translation-")
+    t = float(history[-1]["time"])
+    corners = sorted({int(c[1:].split("_")[0]) for c in rows[0] if c.startswith("c")
+                      and c[1] != "0" and c.endswith("_x")})
+    pairs = [("u_x", None, args.velocity[0]), ("u_y", None, args.velocity[1])]
+    for k in corners:
+        pairs += [("c%d_x" % k, "c0%d_x" % k, args.velocity[0]),
+                  ("c%d_y" % k, "c0%d_y" % k, args.velocity[1])]
+    worst = 0.0
+    for p in rows:
+        for now, then, v in pairs:
+            moved = float(p[now]) - (float(p[then]) if then else 0.0)
+            worst = max(worst, abs(moved - v * t))
+    print("t = %g: %d particles, %d corners each; largest error of the translation %.2e"
+          % (t, len(rows), len(corners), worst))
+    if not corners and args.corners:
+        print("FAIL: the particles carry no corners")
+        sys.exit(1)
+    if worst > args.atol:
+        print("FAIL: the translation is off by %.2e (allowed %g)" % (worst, args.atol))
+        sys.exit(1)
 
 
 def energy(args):
@@ -449,8 +482,18 @@ def main():
     u.add_argument("--reaction", nargs=2, action="append", default=[], metavar=("COLUMN", "WIDTH"),
                    help="the history column of a support on a y face of reference width WIDTH "
                         "must equal sigma_yy F_xx WIDTH at the last step")
+    u.add_argument("--total-volume", type=float,
+                   help="the particle volumes (the volume column) must sum to this")
     u.add_argument("--np", type=int, default=1)
     u.add_argument("--set", action="append", default=[])
+
+    t = sub.add_parser("translation")
+    t.add_argument("--deck", required=True)
+    t.add_argument("--velocity", type=float, nargs=2, required=True)
+    t.add_argument("--atol", type=float, default=1e-12)
+    t.add_argument("--corners", action="store_true", help="the particles must carry corners")
+    t.add_argument("--np", type=int, default=1)
+    t.add_argument("--set", action="append", default=[])
 
     e = sub.add_parser("energy")
     e.add_argument("--deck", required=True)
@@ -509,7 +552,7 @@ def main():
 
     args = p.parse_args()
     {"convergence": convergence, "ranks": ranks, "fails": fails, "docs": docs, "newton": newton,
-     "same": same, "uniform": uniform, "unloading": unloading, "energy": energy}[args.check](args)
+     "same": same, "uniform": uniform, "translation": translation, "unloading": unloading, "energy": energy}[args.check](args)
 
 
 if __name__ == "__main__":

@@ -3,14 +3,18 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultComm.hpp>
 
 #include "app/Bodies.hpp"
 #include "app/Output.hpp"
+#include "app/shapes/Mesh.hpp"
 #include "core/Errors.hpp"
 #include "core/NodeOwnership.hpp"
 #include "core/Parameters.hpp"
+#include "io/MeshFile.hpp"
 #include "material/MaterialFactory.hpp"
 
 namespace impm {
@@ -196,6 +200,109 @@ TEST(Output, FieldsAreSelectedFromTheRegistry) {
     EXPECT_NE(std::string(e.what()).find("'stres' is not an output field (did you mean 'stress'?)"),
               std::string::npos)
         << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace impm
+
+namespace impm {
+namespace {
+
+// Mesh bodies: a mesh file written here (one per rank: the ranks run this test together),
+// read back as a body, and the checks that refuse a bad element before anything runs.
+class MeshBodies : public ::testing::Test {
+ protected:
+  void TearDown() override {
+    for (const char* stem : {"squares", "clockwise", "folded", "bars"})
+      std::remove(file(stem).c_str());
+  }
+  static std::string file(const std::string& stem) {
+    return "unit_app_" + stem + "_" +
+           std::to_string(Teuchos::DefaultComm<int>::getComm()->getRank()) + ".exo";
+  }
+  // Two unit squares side by side, blocks "left" and "right"; side set "left edge" on the
+  // first square's left side, "right edge" on the second's right side.
+  static BodyMesh twoSquares() {
+    BodyMesh m;
+    m.nodes = {{0, 0}, {1, 0}, {2, 0}, {0, 1}, {1, 1}, {2, 1}};
+    BodyMesh::Block a, b;
+    a.id = 1, a.name = "left", a.connectivity = {0, 1, 4, 3};
+    b.id = 2, b.name = "right", b.connectivity = {1, 2, 5, 4};
+    m.blocks = {a, b};
+    BodyMesh::SideSet s, t;
+    s.id = 1, s.name = "left edge", s.sides = {{0, 3}};
+    t.id = 2, t.name = "right edge", t.sides = {{1, 1}};
+    m.sideSets = {s, t};
+    return m;
+  }
+  static Teuchos::ParameterList params(const std::string& path,
+                                       std::vector<std::string> blocks = {}) {
+    Teuchos::ParameterList p;
+    p.set("Mesh File", path);
+    p.set("Element Blocks", Teuchos::Array<std::string>(blocks));
+    return p;
+  }
+  // The message of the InputError or FileError that making the body throws.
+  static std::string refusal(const BodyMesh& m, const std::string& stem) {
+    writeBodyMesh(file(stem), m, "test");
+    try {
+      Mesh body(params(file(stem)), "Bodies/b");
+    } catch (const InputError& e) {
+      return e.path() + ": " + e.what();
+    } catch (const FileError& e) {
+      return e.file() + ": " + e.what();
+    }
+    return "no error";
+  }
+};
+
+TEST_F(MeshBodies, ElementsBecomeParticlesWithTheirAreasCornersAndSideSets) {
+  writeBodyMesh(file("squares"), twoSquares(), "test");
+  const Mesh right(params(file("squares"), {"right"}), "Bodies/b");
+  const auto grid = makeGridGeometry<2>({0.0, 0.0}, {2.0, 1.0}, {4, 2});
+  const auto seeds = right.fill(grid, 1, false);
+  ASSERT_EQ(seeds.size(), 1u);
+  EXPECT_DOUBLE_EQ(seeds[0].volume, 1.0);
+  EXPECT_DOUBLE_EQ(seeds[0].x[0], 1.5);
+  EXPECT_DOUBLE_EQ(seeds[0].corner[2][0], 2.0);
+  EXPECT_DOUBLE_EQ(seeds[0].faces[1], 2.0);  // bit 1: "right edge" on edge 1
+  EXPECT_EQ(right.edgesOn(0), 0);            // "left edge" names no edge of this body
+  EXPECT_EQ(right.edgesOn(1), 1);
+  const double inside[2] = {1.5, 0.5}, outside[2] = {0.5, 0.5};
+  EXPECT_TRUE(right.contains(inside));
+  EXPECT_FALSE(right.contains(outside));
+  const Mesh both(params(file("squares")), "Bodies/b");
+  EXPECT_EQ(both.fill(grid, 1, false).size(), 2u);
+}
+
+TEST_F(MeshBodies, BadElementsAndFilesAreRefused) {
+  auto clockwise = twoSquares();
+  clockwise.blocks[1].connectivity = {1, 4, 5, 2};
+  EXPECT_NE(refusal(clockwise, "clockwise").find("element 2 (block 'right') of unit_app_"),
+            std::string::npos);
+  EXPECT_NE(refusal(clockwise, "clockwise").find("has a non-positive area"), std::string::npos);
+  auto folded = twoSquares();
+  folded.nodes[4] = {0.2, 0.2};  // the shared corner pushed inside the first square
+  EXPECT_NE(refusal(folded, "folded").find("is not a convex quadrilateral"), std::string::npos);
+  auto bars = twoSquares();
+  bars.blocks[0].type = "BAR2", bars.blocks[0].nodesPerElement = 2;
+  bars.blocks[0].connectivity = {0, 1, 1, 2};
+  bars.sideSets.clear();
+  EXPECT_NE(refusal(bars, "bars").find("element block 'left' has BAR2 elements"),
+            std::string::npos);
+  try {
+    Mesh m(params(file("squares_missing")), "Bodies/b");
+    FAIL() << "no error";
+  } catch (const FileError& e) {
+    EXPECT_EQ(std::string(e.what()), "the mesh file does not exist");
+  }
+  writeBodyMesh(file("squares"), twoSquares(), "test");
+  try {
+    Mesh m(params(file("squares"), {"middle"}), "Bodies/b");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.path(), "Bodies/b/Element Blocks");
   }
 }
 

@@ -1,11 +1,13 @@
 // The particle-grid map: partition of unity and linear completeness (eq. 1.8b-c, 1.79-1.80)
 // of phi_ip and G_ip for every scheme, on regular and random particle layouts in 1-D and
-// 2-D; exactness of the GIMP average; CPDI particles spanning several cells (eq. 1.40).
+// 2-D; exactness of the GIMP average; CPDI particles spanning several cells (eq. 1.40);
+// CPDI2 quadrilaterals and CPTI triangles (tracked corners).
 
 #include <gtest/gtest.h>
 
 #include <random>
 
+#include "basis/CornerWeights.hpp"
 #include "basis/Method.hpp"
 #include "basis/Tent.hpp"
 #include "core/Errors.hpp"
@@ -197,6 +199,103 @@ TEST(ParticleGridMap, ParticleOutsideTheGridIsReported) {
       EXPECT_NE(std::string(e.what()).find("particle 102"), std::string::npos) << e.what();
     }
   }
+}
+
+}  // namespace
+}  // namespace impm
+
+namespace impm {
+namespace {
+
+// Particles with tracked corners: random convex quadrilaterals (a parallelogram whose corners
+// move by up to a fifth of its size) and, every third, triangles (the last corner repeated);
+// x_p is the polygon's centroid, which the average of x over the domain reproduces.
+ParticleSet<2> cornerParticles(const GridGeometry<2>& grid, int n, unsigned seed) {
+  ParticleSet<2> ps(n);
+  FieldSpec spec;
+  spec.name = kCornersField, spec.shape = FieldShape::corners;
+  ps.declare(spec);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  auto x = Kokkos::create_mirror_view(ps.x);
+  auto c = Kokkos::create_mirror_view(ps.values(kCornersField));
+  const double h = grid.spacing[0];
+  for (int p = 0; p < n; ++p) {
+    const double centre[2] = {0.3 + 0.4 * unit(rng), 0.3 + 0.4 * unit(rng)};
+    const double size = (0.3 + 2.0 * unit(rng)) * h;
+    const double sign[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    double q[4][2];
+    for (int k = 0; k < 4; ++k)
+      for (int d = 0; d < 2; ++d)
+        q[k][d] = centre[d] + sign[k][d] * size / 2 + (unit(rng) - 0.5) * 0.4 * size;
+    if (p % 3 == 0)
+      q[3][0] = q[2][0], q[3][1] = q[2][1];
+    double area = 0, cx = 0, cy = 0;
+    for (int k = 0; k < 4; ++k) {
+      const double* a = q[k];
+      const double* b = q[(k + 1) % 4];
+      const double w = a[0] * b[1] - b[0] * a[1];
+      area += w, cx += (a[0] + b[0]) * w, cy += (a[1] + b[1]) * w;
+      c(p, 2 * k) = q[k][0], c(p, 2 * k + 1) = q[k][1];
+    }
+    x(p, 0) = cx / (3 * area), x(p, 1) = cy / (3 * area);
+  }
+  Kokkos::deep_copy(ps.x, x);
+  Kokkos::deep_copy(ps.values(kCornersField), c);
+  return ps;
+}
+
+TEST(CornerWeights, PartitionOfUnityAndCompletenessOnQuadrilateralsAndTriangles) {
+  const auto grid = unitGrid<2>(8);
+  expectPartitionOfUnityAndCompleteness(Method::cpdi, grid, cornerParticles(grid, 300, 5), 1e-12);
+}
+
+TEST(CornerWeights, ParallelogramGivesCpdiAndTriangleGivesCpti) {
+  const auto grid = unitGrid<2>(4);
+  ParticleSet<2> ps(1);
+  auto x = Kokkos::create_mirror_view(ps.x);
+  auto r = Kokkos::create_mirror_view(ps.domain);
+  x(0, 0) = 0.41, x(0, 1) = 0.52;
+  r(0, 0, 0) = 0.2, r(0, 1, 0) = 0.05, r(0, 0, 1) = -0.07, r(0, 1, 1) = 0.16;
+  Kokkos::deep_copy(ps.x, x), Kokkos::deep_copy(ps.domain, r);
+  CpdiWeights<2> cpdi(grid, ps);
+  FieldSpec spec;
+  spec.name = kCornersField, spec.shape = FieldShape::corners;
+  ps.declare(spec);
+  auto c = ps.values(kCornersField);
+  const double sign[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  for (int k = 0; k < 4; ++k)
+    for (int d = 0; d < 2; ++d)
+      c(0, 2 * k + d) = x(0, d) + sign[k][0] * r(0, d, 0) + sign[k][1] * r(0, d, 1);
+  CornerWeights<2> corners(grid, ps, c);
+  const int lo[2] = {0, 0};
+  for (int j = 0; j <= 4; ++j)
+    for (int i = 0; i <= 4; ++i) {
+      const int node[2] = {i, j};
+      double phi1, phi2, g1[2], g2[2];
+      cpdi.evaluate(0, lo, node, phi1, g1);
+      corners.evaluate(0, lo, node, phi2, g2);
+      EXPECT_NEAR(phi1, phi2, 1e-14);
+      for (int d = 0; d < 2; ++d)
+        EXPECT_NEAR(g1[d], g2[d], 1e-12);
+    }
+  // A triangle: w_c = 1/3 (CPTI), g_c the inward edge normals over twice the area.
+  const double t[3][2] = {{0.1, 0.2}, {0.8, 0.35}, {0.3, 0.9}};
+  for (int k = 0; k < 4; ++k)
+    for (int d = 0; d < 2; ++d)
+      c(0, 2 * k + d) = t[k < 3 ? k : 2][d];
+  double w[4], g[4][2];
+  corners.cornerWeights(0, w, g);
+  const double area2 =
+      (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) - (t[2][0] - t[0][0]) * (t[1][1] - t[0][1]);
+  // Tensor corners 0, 1 are stored 0, 1; tensor 2 and 3 are both the third corner.
+  EXPECT_NEAR(w[0], 1.0 / 3, 1e-14);
+  EXPECT_NEAR(w[1], 1.0 / 3, 1e-14);
+  EXPECT_NEAR(w[2] + w[3], 1.0 / 3, 1e-14);
+  // grad lambda_0 = (y1 - y2, x2 - x1) / (2A).
+  EXPECT_NEAR(g[0][0], (t[1][1] - t[2][1]) / area2, 1e-12);
+  EXPECT_NEAR(g[0][1], (t[2][0] - t[1][0]) / area2, 1e-12);
+  EXPECT_NEAR(g[2][0] + g[3][0], (t[0][1] - t[1][1]) / area2, 1e-12);
 }
 
 }  // namespace

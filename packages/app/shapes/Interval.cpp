@@ -23,11 +23,16 @@ Interval::Interval(const Teuchos::ParameterList& params, const std::string& path
 std::vector<Seed<1>> Interval::fill(const GridGeometry<1>& g, int perCell, bool gauss) const {
   const double a = lower_[0], b = upper_[0], h = g.spacing[0];
   std::vector<Seed<1>> seeds;
+  const auto add = [&](double x, double length) {
+    Seed<1> s{};
+    s.x[0] = x, s.half[0][0] = length / 2, s.volume = length;
+    seeds.push_back(s);
+  };
   if (!gauss) {
     const int n = std::max(1, static_cast<int>(std::lround(perCell * (b - a) / h)));
     const double length = (b - a) / n;
     for (int k = 0; k < n; ++k)
-      seeds.push_back({{a + (k + 0.5) * length}, {{length / 2}}, length});
+      add(a + (k + 0.5) * length, length);
     return seeds;
   }
   for (int c = 0; c < g.cells[0]; ++c) {
@@ -35,8 +40,8 @@ std::vector<Seed<1>> Interval::fill(const GridGeometry<1>& g, int perCell, bool 
     if (hi - lo <= 1e-12 * h)
       continue;
     const double mid = 0.5 * (lo + hi), off = (hi - lo) / (2 * std::sqrt(3.0));
-    seeds.push_back({{mid - off}, {{(hi - lo) / 4}}, (hi - lo) / 2});
-    seeds.push_back({{mid + off}, {{(hi - lo) / 4}}, (hi - lo) / 2});
+    add(mid - off, (hi - lo) / 2);
+    add(mid + off, (hi - lo) / 2);
   }
   return seeds;
 }

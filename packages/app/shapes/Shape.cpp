@@ -16,6 +16,14 @@ double Shape<Dim>::boxDistance(const double* x) const {
 }
 
 std::vector<Seed<2>> SubCellShape::fill(const GridGeometry<2>& g, int perCell, bool gauss) const {
+  return subCellFill(*this, g, perCell, gauss);
+}
+
+std::vector<Seed<2>> subCellFill(const Shape<2>& shape, const GridGeometry<2>& g, int perCell,
+                                 bool gauss) {
+  const auto& lower_ = shape.lower();
+  const auto& upper_ = shape.upper();
+  const auto contains = [&](const double* x) { return shape.contains(x); };
   const int n = gauss ? 2 : perCell;
   int lo[2], hi[2];
   for (int d = 0; d < 2; ++d) {

@@ -7,6 +7,8 @@
 // every n x n sub-cell whose centre the shape contains, the sub-cell being its domain, and
 // fem's Gauss points in the cells whose centre it contains.  A shape that knows better (the
 // 1-D interval's equal particles, a mesh's elements, an image's pixels) fills itself.
+// Shapes that carry boundary names (a mesh's side sets) list them: the bit k of a seed's
+// face mask is sideSets()[k].
 
 #include <array>
 #include <string>
@@ -17,12 +19,18 @@
 namespace impm {
 
 // An integration point before it becomes a particle: position, domain half-vectors r_k
-// (columns: half[a][k] is component a of r_k) and volume (1-D: length).
+// (columns: half[a][k] is component a of r_k) and volume (1-D: length).  A mesh element
+// also gives its corners, counter-clockwise (a triangle repeats its last corner), and for
+// each edge k (corner k to corner k + 1) the bit mask of the mesh's side sets that hold it.
 template <int Dim>
 struct Seed {
+  static constexpr int kCorners = 1 << Dim;
   double x[Dim];
   double half[Dim][Dim];
   double volume;
+  bool hasCorners = false;
+  double corner[kCorners][Dim];
+  double faces[2 * Dim];
 };
 
 template <int Dim>
@@ -44,10 +52,25 @@ class Shape {
   // per cell and direction), in a rank-independent order.
   virtual std::vector<Seed<Dim>> fill(const GridGeometry<Dim>& grid, int perCell,
                                       bool gauss) const = 0;
+  // True when fill gives corners (mesh elements).
+  virtual bool hasCorners() const { return false; }
+  // The named parts of the boundary the seeds' face masks refer to.
+  virtual const std::vector<std::string>& sideSets() const {
+    static const std::vector<std::string> none;
+    return none;
+  }
+  // How many of the body's faces side set k holds.
+  virtual int edgesOn(int /*sideSet*/) const { return 0; }
+  // The file the shape was read from ("" for shapes given by numbers).
+  virtual std::string source() const { return ""; }
 
  protected:
   std::array<double, Dim> lower_{}, upper_{};
 };
+
+// The sub-cell filling (above) of any 2-D shape.
+std::vector<Seed<2>> subCellFill(const Shape<2>& shape, const GridGeometry<2>& grid, int perCell,
+                                 bool gauss);
 
 // A 2-D shape filled on the grid's sub-cells (above).
 class SubCellShape : public Shape<2> {

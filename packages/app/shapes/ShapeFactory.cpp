@@ -6,6 +6,7 @@
 #include "app/shapes/Disk.hpp"
 #include "app/shapes/Image.hpp"
 #include "app/shapes/Interval.hpp"
+#include "app/shapes/Mesh.hpp"
 #include "app/shapes/Polygon.hpp"
 #include "app/shapes/Rectangle.hpp"
 #include "core/Errors.hpp"
@@ -44,7 +45,7 @@ Entry entry(const std::string& name) {
 const std::vector<Entry>& registry() {
   static const std::vector<Entry> shapes = {
       entry<Interval>("interval"), entry<Rectangle>("rectangle"), entry<Disk>("disk"),
-      entry<Polygon>("polygon"),   entry<Image>("image"),
+      entry<Polygon>("polygon"),   entry<Image>("image"),         entry<Mesh>("mesh"),
   };
   return shapes;
 }
@@ -57,7 +58,7 @@ void declareShapeParameters(Teuchos::ParameterList& valid) {
     names.push_back(e.name);
   declareChoice(valid, "Shape", "interval", names,
                 "Geometry of the body in the reference configuration: interval (1-D); "
-                "rectangle, disk, polygon or image (2-D)");
+                "rectangle, disk, polygon, image or mesh (2-D)");
   for (const auto& e : registry())
     e.declare(valid.sublist("[Shape=" + e.name + "]"));
 }
