@@ -40,9 +40,8 @@ void updateParticles(Kinematics kinematics, const ParticleGridMap<Dim, Space>& m
               s += P(p, a, c) * F(p, b, c);
             stress(p, a, b) = s / J;
           }
-        if (!moves)
-          return;
-        volume(p) = J * volume0(p);
+        // The domain follows F with either kinematics (total Lagrangian: for output only,
+        // the map stays on domain0); the volume only where the particles move.
         for (int a = 0; a < Dim; ++a)
           for (int k = 0; k < Dim; ++k) {
             double s = 0;
@@ -50,6 +49,8 @@ void updateParticles(Kinematics kinematics, const ParticleGridMap<Dim, Space>& m
               s += F(p, a, c) * domain0(p, c, k);
             domain(p, a, k) = s;
           }
+        if (moves)
+          volume(p) = J * volume0(p);
       });
 }
 

@@ -3,9 +3,10 @@
 // u_p = sum_i phi_ip u_i (eq. 1.23) and the particle state is advanced:
 //   u_p += sum_i phi_ip du_i,  x_p += sum_i phi_ip du_i,  F_p = trial F,
 //   stress = P F^T / J (Cauchy; in 1-D the axial force per unit section);
-// with updated-Lagrangian kinematics the integration domains follow the deformation:
-//   V_p = J V_p0,  domain = F domain0 (eq. 1.36 CPDI vectors).
-// (With total-Lagrangian kinematics the map is built at X_p and the reference domains.)
+// the domains follow the deformation, domain = F domain0 (eq. 1.36 CPDI vectors), and with
+// updated-Lagrangian kinematics so does the volume, V_p = J V_p0.  (With total-Lagrangian
+// kinematics the map is built at X_p, the reference domains and volumes; domain is then
+// what the output draws.)
 
 #include "assembly/Kinematics.hpp"
 

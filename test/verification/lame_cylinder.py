@@ -122,11 +122,12 @@ def plot(path, mesh, image):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(6, 4.5))
-    for data, label, mark in ((mesh, "mesh body (cpdi, CPDI2 domains)", "o-"),
-                              (image, "image body (cpdi, pixel domains)", "s-")):
-        ax.loglog([d[2] for d in data], [d[0] for d in data], mark, label=label + ": $e_u$")
-        ax.loglog([d[2] for d in data], [d[1] for d in data], mark.replace("-", "--"),
-                  label=label + r": $e_\sigma$", alpha=0.6)
+    for data, label, mark, colour in ((mesh, "mesh body (CPDI2 domains)", "o", "tab:blue"),
+                                      (image, "image body (pixel domains)", "s", "tab:red")):
+        ax.loglog([d[2] for d in data], [d[0] for d in data], mark + "-", color=colour,
+                  label=label + ": $e_u$")
+        ax.loglog([d[2] for d in data], [d[1] for d in data], mark + "--", color=colour,
+                  label=label + r": $e_\sigma$", alpha=0.5)
     n0 = mesh[0][2]
     ns = [m[2] for m in mesh]
     ax.loglog(ns, [mesh[0][0] * n0 / n for n in ns], "k:", label="second order in h")
