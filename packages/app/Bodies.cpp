@@ -222,15 +222,14 @@ void Bodies<Dim>::declareFields(ParticleSet<Dim>& particles, Method method) cons
 
 namespace {
 
-// The reference corners of a seed, counter-clockwise: its own, or its parallelogram's
-// x -+ r_1 -+ r_2.
+// The reference corners of a seed's parallelogram x -+ r_1 -+ r_2, counter-clockwise.
 template <int Dim>
-void seedCorners(const Seed<Dim>& seed, double corner[1 << Dim][Dim]) {
+void parallelogramCorners(const Seed<Dim>& seed, double corner[1 << Dim][Dim]) {
   for (int c = 0; c < (1 << Dim); ++c) {
     const int t = CornerWeights<Dim>::stored(c);  // stored <-> tensor: the same swap
     for (int a = 0; a < Dim; ++a) {
-      corner[c][a] = seed.hasCorners ? seed.corner[c][a] : seed.x[a];
-      for (int k = 0; !seed.hasCorners && k < Dim; ++k)
+      corner[c][a] = seed.x[a];
+      for (int k = 0; k < Dim; ++k)
         corner[c][a] += CornerWeights<Dim>::sign(t, k) * seed.half[a][k];
     }
   }
@@ -243,24 +242,25 @@ ParticleSet<Dim> Bodies<Dim>::createParticles(Method method,
                                               const Decomposition<Dim>& decomposition, int rank,
                                               const Materials<Dim>& materials,
                                               bool displaced) const {
+  // Every body's seeds, and which of them this rank keeps (not copied: an image of 16 million
+  // pixels has as many seeds, and memory the process touches costs time).
   struct Local {
-    Seed<Dim> seed;
     GlobalId id;
     int body;
+    std::size_t seed;
   };
+  std::vector<std::vector<Seed<Dim>>> seedsOf(bodies_.size());
   std::vector<Local> mine;
   GlobalId nextId = 0;
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
-    const auto seeds =
-        bodies_[b].shape->fill(grid_, bodies_[b].particlesPerCell, !isParticleMethod(method));
+    auto& seeds = seedsOf[b];
+    seeds = bodies_[b].shape->fill(grid_, bodies_[b].particlesPerCell, !isParticleMethod(method));
     if (seeds.empty())
       throw InputError("Bodies/" + bodies_[b].name,
                        "the body holds no integration point (smaller than a sub-cell?)");
-    for (const auto& seed : seeds) {
-      if (decomposition.ownerOfPoint(seed.x) == rank)
-        mine.push_back({seed, nextId, static_cast<int>(b)});
-      ++nextId;
-    }
+    for (std::size_t k = 0; k < seeds.size(); ++k, ++nextId)
+      if (decomposition.ownerOfPoint(seeds[k].x) == rank)
+        mine.push_back({nextId, static_cast<int>(b), k});
   }
   ParticleSet<Dim> particles(mine.size());
   declareFields(particles, method);
@@ -268,7 +268,7 @@ ParticleSet<Dim> Bodies<Dim>::createParticles(Method method,
   auto ps = particles.mirror(Kokkos::DefaultHostExecutionSpace());
   for (std::size_t p = 0; p < mine.size(); ++p) {
     const Body<Dim>& b = bodies_[mine[p].body];
-    const Seed<Dim>& seed = mine[p].seed;
+    const Seed<Dim>& seed = seedsOf[mine[p].body][mine[p].seed];
     ps.id(p) = mine[p].id;
     ps.body(p) = mine[p].body;
     ps.material(p) = b.material;
@@ -307,7 +307,7 @@ ParticleSet<Dim> Bodies<Dim>::createParticles(Method method,
       }
     }
     if (corners)
-      placeCorners(ps, p, seed, F);
+      placeCorners(ps, p, *b.shape, mine[p].seed, seed, F);
     for (int a = 0; a < Dim; ++a)
       ps.v(p, a) = b.velocity[a](arguments<Dim>(x, X, 0.0));
   }
@@ -318,12 +318,16 @@ ParticleSet<Dim> Bodies<Dim>::createParticles(Method method,
 // x_c = x_p + F (X_c - X_p): the initial displacement is affine over the domain.
 template <int Dim>
 void Bodies<Dim>::placeCorners(const ParticleSet<Dim, Kokkos::DefaultHostExecutionSpace>& ps,
-                               std::size_t p, const Seed<Dim>& seed, const double F[Dim][Dim]) {
+                               std::size_t p, const Shape<Dim>& shape, std::size_t k,
+                               const Seed<Dim>& seed, const double F[Dim][Dim]) {
   const auto& now = ps.values(kCornersField);
   const auto& then = ps.values(kReferenceCornersField);
   const auto& faces = ps.values(kFacesField);
-  double corner[1 << Dim][Dim];
-  seedCorners<Dim>(seed, corner);
+  double corner[1 << Dim][Dim], mask[2 * Dim] = {};
+  if (shape.hasCorners())
+    shape.seedCorners(k, corner, mask);
+  else
+    parallelogramCorners<Dim>(seed, corner);
   for (int c = 0; c < (1 << Dim); ++c)
     for (int a = 0; a < Dim; ++a) {
       then(p, c * Dim + a) = corner[c][a];
@@ -333,7 +337,7 @@ void Bodies<Dim>::placeCorners(const ParticleSet<Dim, Kokkos::DefaultHostExecuti
       now(p, c * Dim + a) = x;
     }
   for (int f = 0; f < 2 * Dim; ++f)
-    faces(p, f) = seed.hasCorners ? seed.faces[f] : 0.0;
+    faces(p, f) = mask[f];
 }
 
 template <int Dim>

@@ -74,8 +74,10 @@ class Bodies {
   void applyLoads(ParticleSet<Dim>& particles, double time) const;
 
  private:
+  // The corners of particle p, from seed k of `shape`.
   static void placeCorners(const ParticleSet<Dim, Kokkos::DefaultHostExecutionSpace>& ps,
-                           std::size_t p, const Seed<Dim>& seed, const double F[Dim][Dim]);
+                           std::size_t p, const Shape<Dim>& shape, std::size_t k,
+                           const Seed<Dim>& seed, const double F[Dim][Dim]);
 
   GridGeometry<Dim> grid_;
   std::vector<Body<Dim>> bodies_;

@@ -66,7 +66,12 @@ std::vector<Seed<2>> Image::fill(const GridGeometry<2>& grid, int perCell, bool 
     return SubCellShape::fill(grid, perCell, gauss);
   const int n = perPixel_;
   const double h = pixel_ / n;
+  std::size_t selectedPixels = 0;
+  for (int row = 0; row < image_.height; ++row)
+    for (int column = 0; column < image_.width; ++column)
+      selectedPixels += selected(row, column);
   std::vector<Seed<2>> seeds;
+  seeds.reserve(selectedPixels * n * n);
   // Bottom row first, as the lattice shapes order theirs: the order does not depend on ranks.
   for (int fromBottom = 0; fromBottom < image_.height; ++fromBottom)
     for (int column = 0; column < image_.width; ++column) {

@@ -176,14 +176,16 @@ std::vector<Seed<2>> Mesh::fill(const GridGeometry<2>& grid, int perCell, bool g
     s.volume = areaAndCentroid(elements_[e], s.x);
     s.half[0][0] = s.half[1][1] = 0.5 * std::sqrt(s.volume);  // the square of equal area
     s.half[0][1] = s.half[1][0] = 0.0;
-    s.hasCorners = true;
-    for (int k = 0; k < 4; ++k) {
-      for (int d = 0; d < 2; ++d)
-        s.corner[k][d] = elements_[e][k][d];
-      s.faces[k] = faces_[e][k];
-    }
   }
   return seeds;
+}
+
+void Mesh::seedCorners(std::size_t k, double corner[4][2], double faces[4]) const {
+  for (int c = 0; c < 4; ++c) {
+    for (int d = 0; d < 2; ++d)
+      corner[c][d] = elements_[k][c][d];
+    faces[c] = faces_[k][c];
+  }
 }
 
 }  // namespace impm

@@ -30,6 +30,7 @@ class Mesh : public Shape<2> {
   std::string placement() const override { return "Mesh File"; }
   std::vector<Seed<2>> fill(const GridGeometry<2>& grid, int perCell, bool gauss) const override;
   bool hasCorners() const override { return true; }
+  void seedCorners(std::size_t k, double corner[4][2], double faces[4]) const override;
   const std::vector<std::string>& sideSets() const override { return sideSets_; }
   int edgesOn(int sideSet) const override { return edgesOn_.at(sideSet); }
   std::string source() const override { return file_; }

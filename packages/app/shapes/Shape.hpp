@@ -19,18 +19,13 @@
 namespace impm {
 
 // An integration point before it becomes a particle: position, domain half-vectors r_k
-// (columns: half[a][k] is component a of r_k) and volume (1-D: length).  A mesh element
-// also gives its corners, counter-clockwise (a triangle repeats its last corner), and for
-// each edge k (corner k to corner k + 1) the bit mask of the mesh's side sets that hold it.
+// (columns: half[a][k] is component a of r_k) and volume (1-D: length).  Kept small: an
+// image of 16 million pixels makes as many.
 template <int Dim>
 struct Seed {
-  static constexpr int kCorners = 1 << Dim;
   double x[Dim];
   double half[Dim][Dim];
   double volume;
-  bool hasCorners = false;
-  double corner[kCorners][Dim];
-  double faces[2 * Dim];
 };
 
 template <int Dim>
@@ -52,8 +47,12 @@ class Shape {
   // per cell and direction), in a rank-independent order.
   virtual std::vector<Seed<Dim>> fill(const GridGeometry<Dim>& grid, int perCell,
                                       bool gauss) const = 0;
-  // True when fill gives corners (mesh elements).
+  // True when the seeds have corners of their own (mesh elements): seedCorners gives those
+  // of seed k of fill, counter-clockwise (a triangle repeats its last corner), and for each
+  // face f (corner f to corner f + 1) the bit mask of the side sets that hold it.
   virtual bool hasCorners() const { return false; }
+  virtual void seedCorners(std::size_t /*k*/, double /*corner*/[1 << Dim][Dim],
+                           double /*faces*/[2 * Dim]) const {}
   // The named parts of the boundary the seeds' face masks refer to.
   virtual const std::vector<std::string>& sideSets() const {
     static const std::vector<std::string> none;
