@@ -269,7 +269,7 @@ TEST_F(MeshBodies, ElementsBecomeParticlesWithTheirAreasCornersAndSideSets) {
   right.seedCorners(0, corner, faces);
   EXPECT_DOUBLE_EQ(corner[2][0], 2.0);
   EXPECT_DOUBLE_EQ(faces[1], 2.0);  // bit 1: "right edge" on edge 1
-  EXPECT_EQ(right.edgesOn(0), 0);            // "left edge" names no edge of this body
+  EXPECT_EQ(right.edgesOn(0), 0);   // "left edge" names no edge of this body
   EXPECT_EQ(right.edgesOn(1), 1);
   const double inside[2] = {1.5, 0.5}, outside[2] = {0.5, 0.5};
   EXPECT_TRUE(right.contains(inside));
