@@ -67,6 +67,9 @@ class DynamicStepper : public Stepper<Dim> {
   Teuchos::RCP<Vector> equilibriumAcceleration(GridSystem<Dim>& system, const Vector& v, double dt);
   bool solveStep(GridSystem<Dim>& system, const Acceleration& s, const Vector& v, const Vector& a,
                  double dt, Teuchos::RCP<Vector>& du, NewtonReport& report);
+  // The explicit step with the lumped mass: du -= J^-1 R(du) by elimination, no Krylov solve.
+  bool eliminate(GridSystem<Dim>& system, const CrsMatrix& J, Vector& du,
+                 NewtonReport& report) const;
   // The integrator's new grid acceleration and velocity after a step du of size h.
   void integrate(const GridSystem<Dim>& system, const Acceleration& s, double h, const Vector& du,
                  const Vector& v, const Vector& a, Teuchos::RCP<Vector>& vNew,

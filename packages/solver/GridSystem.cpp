@@ -331,6 +331,23 @@ bool GridSystem<Dim>::isLinear() const {
 }
 
 template <int Dim>
+Teuchos::RCP<CrsMatrix> GridSystem<Dim>::explicitJacobian() {
+  if (!frozen_ || inertia_.mass != MassType::lumped || !inertia_.r)
+    return Teuchos::null;
+  auto J = createJacobian();
+  evaluate(Vector(unknownMap()), nullptr, J.get());  // affine in du: any du will do
+  return J;
+}
+
+template <int Dim>
+std::vector<GO> GridSystem<Dim>::extraDofs() const {
+  std::vector<GO> out;
+  for (int k = 0; k < dofs_.numExtras(); ++k)
+    out.push_back(dofs_.extraDof(k));
+  return out;
+}
+
+template <int Dim>
 void GridSystem<Dim>::setInertia(const Inertia& inertia) {
   inertia_ = inertia;
   inertiaOverlap_ = toOverlap(*inertia.r);

@@ -61,6 +61,14 @@ class GridSystem : public ResidualModel {
   // Explicit steps, and linear materials whose step is linear in du (1-D, or total
   // Lagrangian: no push-forward by J).  Boundary conditions and inertia are linear.
   bool isLinear() const override;
+  // Explicit steps with the lumped mass: the Jacobian's nodal block is diagonal (the lumped
+  // mass times c0, the constraint scale on constrained rows) and the extra unknowns couple to
+  // it through their rows and columns only, so the step needs no Krylov solve
+  // (solver/DiagonalSolve).  Returns the assembled Jacobian, or null when the step is not
+  // such (implicit steps, the consistent mass).  Collective.
+  Teuchos::RCP<CrsMatrix> explicitJacobian();
+  // The global indices of the extra unknowns (Robin end forces), the same on every rank.
+  std::vector<GO> extraDofs() const;
   Teuchos::RCP<CrsMatrix> createJacobian() const override;
   void evaluate(const Vector& x, Vector* residual, CrsMatrix* jacobian) override;
 

@@ -223,6 +223,17 @@ def translation(args):
         sys.exit(1)
 
 
+def history(args):
+    """Every row of a history column lies in [--min, --max] (an explicit run's linear
+    iterations, say)."""
+    _, rows = run_tables(args, args.set, args.np, "impm-history-")
+    values = [float(h[args.column]) for h in rows]
+    print("%s over %d steps: min %g max %g" % (args.column, len(values), min(values), max(values)))
+    if min(values) < args.min or max(values) > args.max:
+        print("FAIL: %s leaves [%g, %g]" % (args.column, args.min, args.max))
+        sys.exit(1)
+
+
 def energy(args):
     """Runs a deck and checks its energy balance: the largest |energy_balance| (kinetic +
     strain + dissipated - external work) over the largest external work, at any step."""
@@ -495,6 +506,14 @@ def main():
     t.add_argument("--np", type=int, default=1)
     t.add_argument("--set", action="append", default=[])
 
+    h = sub.add_parser("history")
+    h.add_argument("--deck", required=True)
+    h.add_argument("--column", required=True)
+    h.add_argument("--min", type=float, default=-float("inf"))
+    h.add_argument("--max", type=float, default=float("inf"))
+    h.add_argument("--np", type=int, default=1)
+    h.add_argument("--set", action="append", default=[])
+
     e = sub.add_parser("energy")
     e.add_argument("--deck", required=True)
     e.add_argument("--tolerance", type=float, required=True)
@@ -552,7 +571,8 @@ def main():
 
     args = p.parse_args()
     {"convergence": convergence, "ranks": ranks, "fails": fails, "docs": docs, "newton": newton,
-     "same": same, "uniform": uniform, "translation": translation, "unloading": unloading, "energy": energy}[args.check](args)
+     "same": same, "uniform": uniform, "translation": translation,
+     "history": history, "unloading": unloading, "energy": energy}[args.check](args)
 
 
 if __name__ == "__main__":
