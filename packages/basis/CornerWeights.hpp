@@ -32,10 +32,30 @@ struct CornerWeights {
   GridGeometry<Dim> grid;
   typename ParticleSet<Dim, Space>::Vectors x;
   Table corners;  // (p, c * Dim + d), counter-clockwise (2-D)
+  // w_t and g_t of every particle, computed once (evaluate runs for every node, twice).
+  Kokkos::View<double* [kCorners], typename Space::memory_space> weight;
+  Kokkos::View<double* [kCorners][Dim], typename Space::memory_space> gradientWeight;
 
   // corners: the current or the reference corners (the map's configuration).
-  CornerWeights(const GridGeometry<Dim>& g, const ParticleSet<Dim, Space>& ps, const Table& c)
-      : grid(g), x(ps.x), corners(c) {}
+  CornerWeights(const GridGeometry<Dim>& geometry, const ParticleSet<Dim, Space>& ps,
+                const Table& c)
+      : grid(geometry),
+        x(ps.x),
+        corners(c),
+        weight("CPDI2 w", c.extent(0)),
+        gradientWeight("CPDI2 g", c.extent(0)) {
+    const CornerWeights self = *this;  // views: a shallow copy for the kernel
+    Kokkos::parallel_for(
+        "impm::cornerWeights", RangePolicy<Space>(0, c.extent(0)), KOKKOS_LAMBDA(const int p) {
+          double wp[kCorners], gp[kCorners][Dim];
+          self.cornerWeights(p, wp, gp);
+          for (int t = 0; t < kCorners; ++t) {
+            self.weight(p, t) = wp[t];
+            for (int a = 0; a < Dim; ++a)
+              self.gradientWeight(p, t, a) = gp[t][a];
+          }
+        });
+  }
 
   // The stored (counter-clockwise) index of the tensor corner t, whose bit k is the sign of
   // xi_k: (-,-), (+,-), (-,+), (+,+) are stored 0, 1, 3, 2 (3-D: the same on each face z).
@@ -97,8 +117,6 @@ struct CornerWeights {
 
   KOKKOS_INLINE_FUNCTION void evaluate(int p, const int* /*lo*/, const int node[Dim], double& phi,
                                        double grad[Dim]) const {
-    double w[kCorners], g[kCorners][Dim];
-    cornerWeights(p, w, g);
     phi = 0.0;
     for (int a = 0; a < Dim; ++a)
       grad[a] = 0.0;
@@ -108,9 +126,9 @@ struct CornerWeights {
       double n = 1.0;
       for (int d = 0; d < Dim; ++d)
         n *= tent(xc[d] - node[d]);
-      phi += w[t] * n;
+      phi += weight(p, t) * n;
       for (int a = 0; a < Dim; ++a)
-        grad[a] += g[t][a] * n;
+        grad[a] += gradientWeight(p, t, a) * n;
     }
   }
 };

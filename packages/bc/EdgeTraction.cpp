@@ -21,37 +21,80 @@ struct DomainCorners {
   double ref[4][2], map[4][2], start[4][2];
 };
 
-DomainCorners domainCorners(const ParticleSet<2, Kokkos::DefaultHostExecutionSpace>& host,
-                            std::size_t p, bool total) {
-  DomainCorners c;
-  if (host.has(kCornersField)) {
-    const auto& then = host.values(kReferenceCornersField);
-    const auto& now = host.values(kCornersField);
-    for (int k = 0; k < 4; ++k)
-      for (int d = 0; d < 2; ++d) {
-        c.ref[k][d] = then(p, 2 * k + d), c.start[k][d] = now(p, 2 * k + d);
-        c.map[k][d] = total ? c.ref[k][d] : c.start[k][d];
+// The domains of a particle set, with the corner tables looked up once (not per face).
+class DomainGeometry {
+ public:
+  using Host = ParticleSet<2, Kokkos::DefaultHostExecutionSpace>;
+  DomainGeometry(const Host& host, bool total) : host_(host), total_(total) {
+    tracked_ = host.has(kCornersField);
+    if (tracked_)
+      then_ = host.values(kReferenceCornersField), now_ = host.values(kCornersField);
+  }
+
+  DomainCorners operator()(std::size_t p) const {
+    DomainCorners c;
+    const double sign[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    for (int k = 0; k < 4; ++k) {
+      if (tracked_) {
+        for (int d = 0; d < 2; ++d)
+          c.ref[k][d] = then_(p, 2 * k + d), c.start[k][d] = now_(p, 2 * k + d);
+      } else {
+        double half[2];
+        for (int d = 0; d < 2; ++d) {
+          half[d] = sign[k][0] * host_.domain0(p, d, 0) + sign[k][1] * host_.domain0(p, d, 1);
+          c.ref[k][d] = host_.X(p, d) + half[d];
+        }
+        for (int d = 0; d < 2; ++d)
+          c.start[k][d] = host_.x(p, d) + host_.F(p, d, 0) * half[0] + host_.F(p, d, 1) * half[1];
       }
+      for (int d = 0; d < 2; ++d)
+        c.map[k][d] = total_ ? c.ref[k][d] : c.start[k][d];
+    }
     return c;
   }
-  const double sign[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
-  for (int k = 0; k < 4; ++k) {
-    double half[2];
-    for (int d = 0; d < 2; ++d) {
-      half[d] = sign[k][0] * host.domain0(p, d, 0) + sign[k][1] * host.domain0(p, d, 1);
-      c.ref[k][d] = host.X(p, d) + half[d];
-    }
-    for (int d = 0; d < 2; ++d) {
-      c.start[k][d] = host.x(p, d) + host.F(p, d, 0) * half[0] + host.F(p, d, 1) * half[1];
-      c.map[k][d] = total ? c.ref[k][d] : c.start[k][d];
-    }
-  }
-  return c;
-}
+
+ private:
+  const Host& host_;
+  bool total_, tracked_ = false;
+  Host::Table then_, now_;
+};
 
 // Outward normal times length of the counter-clockwise edge a -> b.
 void edgeNormal(const double a[2], const double b[2], double n[2]) {
   n[0] = b[1] - a[1], n[1] = a[0] - b[0];
+}
+
+// f(overlap index of component a, a, N_i) for the grid nodes around a face's end at `at`
+// (where the step's map was built); throws when the map does not reach a node.
+template <class Fn>
+void forEachEndNode(const ContributionContext<2>& ctx, const double at[2], GlobalId particle,
+                    const std::string& name, Fn&& f) {
+  const auto& grid = ctx.grid;
+  double g[2];
+  int cell[2];
+  for (int d = 0; d < 2; ++d) {
+    g[d] = clipToGrid(grid, d, grid.gridCoord(d, at[d]));
+    cell[d] = std::min(grid.cells[d] - 1, std::max(0, static_cast<int>(std::floor(g[d]))));
+  }
+  for (int j = 0; j <= 1; ++j)
+    for (int i = 0; i <= 1; ++i) {
+      const int node[2] = {cell[0] + i, cell[1] + j};
+      const double N = tent(g[0] - node[0]) * tent(g[1] - node[1]);
+      if (N == 0.0)
+        continue;
+      const GlobalId nodeId = grid.nodeId(node);
+      for (int a = 0; a < 2; ++a) {
+        const LO lid = ctx.dofs.overlapMap()->getLocalElement(ctx.dofs.nodeDof(nodeId, a));
+        if (lid == Teuchos::OrdinalTraits<LO>::invalid()) {
+          std::ostringstream msg;
+          msg << "Boundary Conditions/" << name << ": a loaded face of particle " << particle
+              << " reaches grid node " << nodeId
+              << ", which no integration point reaches (use gimp or cpdi)";
+          throw NumericalError(msg.str());
+        }
+        f(lid, a, N);
+      }
+    }
 }
 
 }  // namespace
@@ -122,47 +165,14 @@ void EdgeTraction::faceForce(const double mid[2], const double refNormal[2],
     force[a] = traction_[a](mid[0], mid[1], time) * length0 - p * n[a];
 }
 
-// f(overlap index of component a, a, N_i) for the grid nodes around a face's end at `at`
-// (where the step's map was built); throws when the map does not reach a node.
-template <class Fn>
-void forEachEndNode(const ContributionContext<2>& ctx, const double at[2], GlobalId particle,
-                    const std::string& name, Fn&& f) {
-  const auto& grid = ctx.grid;
-  double g[2];
-  int cell[2];
-  for (int d = 0; d < 2; ++d) {
-    g[d] = clipToGrid(grid, d, grid.gridCoord(d, at[d]));
-    cell[d] = std::min(grid.cells[d] - 1, std::max(0, static_cast<int>(std::floor(g[d]))));
-  }
-  for (int j = 0; j <= 1; ++j)
-    for (int i = 0; i <= 1; ++i) {
-      const int node[2] = {cell[0] + i, cell[1] + j};
-      const double N = tent(g[0] - node[0]) * tent(g[1] - node[1]);
-      if (N == 0.0)
-        continue;
-      const GlobalId nodeId = grid.nodeId(node);
-      for (int a = 0; a < 2; ++a) {
-        const LO lid = ctx.dofs.overlapMap()->getLocalElement(ctx.dofs.nodeDof(nodeId, a));
-        if (lid == Teuchos::OrdinalTraits<LO>::invalid()) {
-          std::ostringstream msg;
-          msg << "Boundary Conditions/" << name << ": a loaded face of particle " << particle
-              << " reaches grid node " << nodeId
-              << ", which no integration point reaches (use gimp or cpdi)";
-          throw NumericalError(msg.str());
-        }
-        f(lid, a, N);
-      }
-    }
-}
-
-bool EdgeTraction::loaded(const HostParticles& host, std::size_t p, int k, const double mid[2],
-                          const double n0[2]) const {
+bool EdgeTraction::loaded(const HostParticles::Table& faces, std::size_t p, int k,
+                          const double mid[2], const double n0[2]) const {
   const double tol = 1e-9;
   if (mid[0] < box_[0] - tol || mid[0] > box_[1] + tol || mid[1] < box_[2] - tol ||
       mid[1] > box_[3] + tol)
     return false;
   if (sideSet_ >= 0)
-    return hasBit(host.values(kFacesField)(p, k), sideSet_);
+    return hasBit(faces(p, k), sideSet_);
   const double beyond[2] = {mid[0] + 1e-6 * n0[0], mid[1] + 1e-6 * n0[1]};
   return !inside_(beyond);
 }
@@ -170,11 +180,13 @@ bool EdgeTraction::loaded(const HostParticles& host, std::size_t p, int k, const
 void EdgeTraction::addResidual(const ContributionContext<2>& ctx, const HostValues& x,
                                const HostValuesMutable& f) const {
   const auto host = ctx.particles.mirror(Kokkos::DefaultHostExecutionSpace());
-  const bool total = kinematics_ == Kinematics::totalLagrangian;
+  const DomainGeometry domains(host, kinematics_ == Kinematics::totalLagrangian);
+  const HostParticles::Table faces =
+      sideSet_ >= 0 ? host.values(kFacesField) : HostParticles::Table();
   for (std::size_t p = 0; p < host.size(); ++p) {
     if (host.body(p) != body_)
       continue;
-    const DomainCorners c = domainCorners(host, p, total);
+    const DomainCorners c = domains(p);
     for (int k = 0; k < 4; ++k) {
       const int ends[2] = {k, (k + 1) % 4};
       const double *a0 = c.ref[ends[0]], *b0 = c.ref[ends[1]];
@@ -182,7 +194,7 @@ void EdgeTraction::addResidual(const ContributionContext<2>& ctx, const HostValu
       edgeNormal(a0, b0, n0);
       const double length0 = std::hypot(n0[0], n0[1]);
       const double mid[2] = {0.5 * (a0[0] + b0[0]), 0.5 * (a0[1] + b0[1])};
-      if (length0 == 0.0 || !loaded(host, p, k, mid, n0))  // 0: a triangle's collapsed edge
+      if (length0 == 0.0 || !loaded(faces, p, k, mid, n0))  // 0: a triangle's collapsed edge
         continue;
       // The face now: its ends at the start of the step moved by this iterate's increment.
       double now[2][2];

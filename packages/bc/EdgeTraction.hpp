@@ -45,7 +45,8 @@ class EdgeTraction : public Contribution<2> {
   using HostParticles = ParticleSet<2, Kokkos::DefaultHostExecutionSpace>;
   static bool hasBit(double mask, int bit);
   // Whether face k of particle p, with reference midpoint mid and outward normal n0, is loaded.
-  bool loaded(const HostParticles& host, std::size_t p, int k, const double mid[2],
+  // faces: the particles' side-set masks (empty without Side Set).
+  bool loaded(const HostParticles::Table& faces, std::size_t p, int k, const double mid[2],
               const double n0[2]) const;
   // The face's load (force on the whole face) at reference midpoint mid.
   void faceForce(const double mid[2], const double refNormal[2], const double nowNormal[2],

@@ -334,9 +334,10 @@ template <int Dim>
 Teuchos::RCP<CrsMatrix> GridSystem<Dim>::explicitJacobian() {
   if (!frozen_ || inertia_.mass != MassType::lumped || !inertia_.r)
     return Teuchos::null;
-  auto J = createJacobian();
-  evaluate(Vector(unknownMap()), nullptr, J.get());  // affine in du: any du will do
-  return J;
+  if (explicitJacobian_.is_null())  // kept: a fixed grid's system serves every step
+    explicitJacobian_ = createJacobian();
+  evaluate(Vector(unknownMap()), nullptr, explicitJacobian_.get());  // affine: any du will do
+  return explicitJacobian_;
 }
 
 template <int Dim>

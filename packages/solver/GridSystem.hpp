@@ -110,6 +110,7 @@ class GridSystem : public ResidualModel {
   void applyConstraints(const Vector& x, Vector* residual, CrsMatrix* jacobian) const;
   void checkEveryActiveNodeIsIntegrated() const;
 
+  Teuchos::RCP<CrsMatrix> explicitJacobian_;  // the explicit steps' matrix, refilled
   const GridGeometry<Dim> grid_;
   Kinematics kinematics_;
   const ParticleSet<Dim>& particles_;

@@ -13,12 +13,14 @@ import argparse
 import math
 import os
 import statistics
-import struct
 import subprocess
+import sys
 import tempfile
-import zlib
 
-from benchlib import write_section
+from benchlib import ROOT, write_section
+
+sys.path.insert(0, os.path.join(ROOT, "test", "verification"))
+from image_bodies import write_png  # noqa: E402
 
 PIXELS = 4096
 
@@ -34,16 +36,7 @@ def disk_png(path, pixels):
         lo = max(0, min(pixels, int(math.ceil(c - half - 0.5))))
         hi = max(lo, min(pixels, int(math.floor(c + half - 0.5)) + 1))
         raw += b"\0" + b"\0" * lo + b"\xff" * (hi - lo) + b"\0" * (pixels - hi)
-
-    def chunk(tag, data):
-        return (struct.pack(">I", len(data)) + tag + data
-                + struct.pack(">I", zlib.crc32(tag + data) & 0xFFFFFFFF))
-
-    with open(path, "wb") as f:
-        f.write(b"\x89PNG\r\n\x1a\n")
-        f.write(chunk(b"IHDR", struct.pack(">IIBBBBB", pixels, pixels, 8, 0, 0, 0, 0)))
-        f.write(chunk(b"IDAT", zlib.compress(bytes(raw), 6)))
-        f.write(chunk(b"IEND", b""))
+    write_png(path, pixels, pixels, bytes(raw))
 
 
 def measure(cmd, repeat):

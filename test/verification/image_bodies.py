@@ -33,26 +33,29 @@ L_SHAPE = ["#.....",
            "####.."]
 
 
+def write_png(path, width, height, raw, bits=8, colour=False):
+    """Writes a PNG from its raw scanlines (each a filter byte 0, then the samples)."""
+    def chunk(tag, data):
+        return (struct.pack(">I", len(data)) + tag + data
+                + struct.pack(">I", zlib.crc32(tag + data) & 0xFFFFFFFF))
+
+    kind = 2 if colour else 0
+    with open(path, "wb") as f:
+        f.write(b"\x89PNG\r\n\x1a\n")
+        f.write(chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, bits, kind, 0, 0, 0)))
+        f.write(chunk(b"IDAT", zlib.compress(raw)))
+        f.write(chunk(b"IEND", b""))
+
+
 def png(path, rows, bits=8, colour=False):
     """Writes rows of levels as a grayscale (or RGB) PNG without filtering."""
-    height, width = len(rows), len(rows[0])
-    kind = 2 if colour else 0
     raw = b""
     for row in rows:
         raw += b"\0"
         for v in row:
             sample = struct.pack(">H", v) if bits == 16 else bytes([v])
             raw += sample * (3 if colour else 1)
-
-    def chunk(tag, data):
-        return (struct.pack(">I", len(data)) + tag + data
-                + struct.pack(">I", zlib.crc32(tag + data) & 0xFFFFFFFF))
-
-    with open(path, "wb") as f:
-        f.write(b"\x89PNG\r\n\x1a\n")
-        f.write(chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, bits, kind, 0, 0, 0)))
-        f.write(chunk(b"IDAT", zlib.compress(raw)))
-        f.write(chunk(b"IEND", b""))
+    write_png(path, len(rows[0]), len(rows), raw, bits, colour)
 
 
 def tiff16(path, rows):

@@ -21,14 +21,14 @@ std::vector<Seed<2>> SubCellShape::fill(const GridGeometry<2>& g, int perCell, b
 
 std::vector<Seed<2>> subCellFill(const Shape<2>& shape, const GridGeometry<2>& g, int perCell,
                                  bool gauss) {
-  const auto& lower_ = shape.lower();
-  const auto& upper_ = shape.upper();
+  const auto& lower = shape.lower();
+  const auto& upper = shape.upper();
   const auto contains = [&](const double* x) { return shape.contains(x); };
   const int n = gauss ? 2 : perCell;
   int lo[2], hi[2];
   for (int d = 0; d < 2; ++d) {
-    lo[d] = std::max(0, static_cast<int>(std::floor(g.gridCoord(d, lower_[d]))));
-    hi[d] = std::min(g.cells[d], static_cast<int>(std::ceil(g.gridCoord(d, upper_[d]))));
+    lo[d] = std::max(0, static_cast<int>(std::floor(g.gridCoord(d, lower[d]))));
+    hi[d] = std::min(g.cells[d], static_cast<int>(std::ceil(g.gridCoord(d, upper[d]))));
   }
   const double hx = g.spacing[0], hy = g.spacing[1];
   const double off = 0.5 / std::sqrt(3.0);  // Gauss points at +-1/sqrt(3) of the half-cell
