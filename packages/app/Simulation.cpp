@@ -75,7 +75,7 @@ Simulation<Dim>::Simulation(const Teuchos::ParameterList& deck, const std::strin
   collectively(*comm_, [&] { setUp(deck_); });
   collectively(*comm_, [&] { checkExplicitTimeStep(); });
   collectively(*comm_, [&] {
-    newton_ = std::make_unique<NewtonSolver>(deck_.sublist("Solver"), comm_);
+    newton_ = std::make_unique<NewtonSolver>(deck_.sublist("Solver"), comm_, operatorKind(), Dim);
     newton_->setLog(deck_.sublist("Solver").get<bool>("Print Iterations") ? &std::cout : nullptr,
                     "    ");
   });
@@ -186,6 +186,35 @@ void Simulation<Dim>::writeCheckpoint(const CheckpointSeries& series, int step,
     state.contributions.push_back(c->state());
   impm::writeCheckpoint<Dim>(series.pathOf(step), identity_, particles_, totalParticles_, state,
                              gridFields_->values());
+  newton_->forgetPreconditioner();
+}
+
+// The kind of operator the Newton solves meet, which picks the default linear solver
+// (solver/LinearSolver.hpp).  A Newmark step's operator M / (beta dt^2) + K is
+// mass-dominated when dt is short against the wave transit time of a cell h/c: the ratio of
+// K's diagonal to the mass term's is about (c dt / h)^2 beta, so Jacobi leaves a condition
+// number of about 1 + 2 (c dt / h)^2 to CG, a handful of iterations below Courant number 2.
+constexpr GlobalId smallGridNodes = 4000;
+
+template <int Dim>
+OperatorKind Simulation<Dim>::operatorKind() const {
+  if (Dim == 1)
+    return OperatorKind::small;
+  // Below a few thousand nodes ILUT factorises nearly exactly at no cost, and copes with
+  // the nearly singular rows of nodes that barely touch a body, which a direct coarse solve
+  // (all of a small multigrid hierarchy) does not.
+  if (ownership_->grid().numNodes() < smallGridNodes)
+    return OperatorKind::small;
+  const auto& ti = deck_.sublist("Time Integration");
+  const auto& type = ti.get<std::string>("Type");
+  if (type == "static")
+    return OperatorKind::stiffness;
+  if (type == "explicit")
+    return OperatorKind::massDominated;
+  const double transit =
+      DynamicStepper<Dim>::stableTimeStep(ownership_->grid(), particles_, materials_, *comm_);
+  return ti.get<double>("Time Step") <= 2.0 * transit ? OperatorKind::massDominated
+                                                      : OperatorKind::stiffness;
 }
 
 template <int Dim>
@@ -348,7 +377,11 @@ std::vector<std::string> Simulation<Dim>::finish(double finalTime,
                                                  const std::vector<std::string>& files) const {
   const auto F = reactions();
   const auto result = verification_->check<Dim>(particles_, comm_, finalTime, F[0], F[1]);
+  const auto counts = newton_->preconditionerCounts();
   if (comm_->getRank() == 0) {
+    if (counts.builds + counts.reuses > 0)
+      std::cout << "  preconditioner: built " << counts.builds << " times, reused " << counts.reuses
+                << " times\n";
     for (const auto& line : result.report)
       std::cout << "  verification: " << line << "\n";
     const std::string path = outputDirectory_ + "/" + prefix_ + "_verification.csv";

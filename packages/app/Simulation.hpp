@@ -50,6 +50,7 @@ class Simulation {
   std::unique_ptr<Output<Dim>> startOutput(const History<Dim>& history);
   std::unique_ptr<Stepper<Dim>> makeStepper();
   void checkExplicitTimeStep() const;
+  OperatorKind operatorKind() const;
   std::vector<double> reactions() const;
   void printHeader() const;
   void printProgress(const StepRecord& record, const std::vector<double>& F) const;

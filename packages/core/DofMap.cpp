@@ -67,8 +67,10 @@ DofMap<Dim>::DofMap(const NodeOwnership<Dim>& ownership, std::vector<GlobalId> t
   for (; nextExtra != myExtras.end(); ++nextExtra)
     owned.push_back(extraDof(nextExtra->second));
   if (owned.empty()) {
-    padding_ = extraDof(numExtras_ + rank);
-    owned.push_back(padding_);
+    const GO first = (extraDof(numExtras_) + Dim - 1) / Dim * Dim + GO(rank) * Dim;
+    for (int d = 0; d < Dim; ++d)
+      padding_.push_back(first + d);
+    owned = padding_;
   }
 
   // Overlap DOFs: the owned ones first, then touched nodes owned elsewhere.

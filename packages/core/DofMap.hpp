@@ -11,8 +11,10 @@
 // The overlap map is the owned map followed by the other DOFs this rank's contributions
 // reach, as Tpetra's FE assembly requires.
 //
-// A rank that would own no unknown (no particle near its part of the grid) owns one padding
-// unknown instead, numbered after the extras and fixed at zero by the grid system.  Empty
+// A rank that would own no unknown (no particle near its part of the grid) owns padding
+// unknowns instead, fixed at zero by the grid system: Dim of them, numbered as the components
+// of a node of their own after the extras, so that solvers that see the unknowns as blocks of
+// Dim per node (MueLu's aggregation) find whole blocks on every rank.  Empty
 // ranks are not allowed to reach the Krylov solver: Belos' Gram-Schmidt goes through Thyra to
 // Tpetra::MultiVector::multiply, whose local product KokkosBlas::gemm returns without writing
 // when the rank has no rows (Trilinos 13.2), so whatever the result buffer held is summed into
@@ -45,8 +47,8 @@ class DofMap {
   GO extraDof(int k) const { return numNodes_ * Dim + k; }
   // Extra unknowns and the padding unknown: not displacement components of a node.
   bool isExtraDof(GO dof) const { return dof >= numNodes_ * Dim; }
-  // This rank's padding unknown (see above), or -1.
-  GO paddingDof() const { return padding_; }
+  // This rank's padding unknowns (see above): none, or Dim.
+  const std::vector<GO>& paddingDofs() const { return padding_; }
   int numExtras() const { return numExtras_; }
   // Active nodes owned by this rank, ascending.
   const std::vector<GlobalId>& ownedActiveNodes() const { return ownedActive_; }
@@ -57,7 +59,7 @@ class DofMap {
   int numExtras_;
   std::vector<GlobalId> ownedActive_;
   GlobalId numActiveNodes_ = 0;
-  GO padding_ = -1;
+  std::vector<GO> padding_;
   Teuchos::RCP<const Map> owned_, overlap_;
 };
 

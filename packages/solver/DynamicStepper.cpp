@@ -1,5 +1,7 @@
 #include "solver/DynamicStepper.hpp"
 
+#include <algorithm>
+
 #include <Teuchos_CommHelpers.hpp>
 
 #include <cmath>
@@ -147,8 +149,9 @@ void DynamicStepper<Dim>::saveNodalState() {
   auto u = u_->getData(), v = v_->getData(), a = a_->getData();
   for (std::size_t k = 0; k < map.getNodeNumElements(); ++k) {
     const GO gid = map.getGlobalElement(static_cast<LO>(k));
-    if (fixedSystem_->dofs().paddingDof() == gid)  // not an unknown of the problem
-      continue;
+    const auto& padding = fixedSystem_->dofs().paddingDofs();
+    if (std::find(padding.begin(), padding.end(), gid) != padding.end())
+      continue;  // not an unknown of the problem
     s.nodalDofs.push_back(gid);
     s.nodalU.push_back(u[k]), s.nodalV.push_back(v[k]), s.nodalA.push_back(a[k]);
   }

@@ -1,4 +1,5 @@
 #include "solver/GridSystem.hpp"
+#include "solver/RigidBodyModes.hpp"
 
 #include "assembly/EntryDofs.hpp"
 #include "assembly/Forces.hpp"
@@ -81,8 +82,8 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
   std::vector<std::pair<GO, GO>> couplings;
   for (std::size_t c = 0; c < contributions_.size(); ++c)
     contributions_[c]->couplings(context(static_cast<int>(c)), couplings);
-  if (dofs_.paddingDof() >= 0)  // its row holds its diagonal only
-    couplings.emplace_back(dofs_.paddingDof(), dofs_.paddingDof());
+  for (GO padding : dofs_.paddingDofs())  // its row holds its diagonal only
+    couplings.emplace_back(padding, padding);
   checkEveryActiveNodeIsIntegrated();
   {
     IMPM_TIMER("graph");
@@ -111,12 +112,17 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
 }
 
 template <int Dim>
+Teuchos::RCP<MultiVector> GridSystem<Dim>::nearNullSpace() const {
+  return rigidBodyModes(grid_, dofs_);
+}
+
+template <int Dim>
 std::vector<std::pair<LO, double>> GridSystem<Dim>::constrainedRows() const {
   std::vector<std::pair<GO, double>> global;
   for (std::size_t c = 0; c < contributions_.size(); ++c)
     contributions_[c]->constraints(context(static_cast<int>(c)), global);
-  if (dofs_.paddingDof() >= 0)
-    global.emplace_back(dofs_.paddingDof(), 0.0);
+  for (GO padding : dofs_.paddingDofs())
+    global.emplace_back(padding, 0.0);
   std::vector<std::pair<LO, double>> rows;
   const auto& owned = *dofs_.ownedMap();
   for (const auto& [gid, value] : global) {

@@ -70,6 +70,8 @@ class GridSystem : public ResidualModel {
   // The global indices of the extra unknowns (Robin end forces), the same on every rank.
   std::vector<GO> extraDofs() const;
   Teuchos::RCP<CrsMatrix> createJacobian() const override;
+  // The rigid-body modes of the nodal unknowns (solver/RigidBodyModes).
+  Teuchos::RCP<MultiVector> nearNullSpace() const override;
   void evaluate(const Vector& x, Vector* residual, CrsMatrix* jacobian) override;
 
   // A zero increment with the contributions' guesses for their extra unknowns.

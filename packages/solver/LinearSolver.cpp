@@ -16,23 +16,26 @@ namespace impm {
 
 namespace {
 
-// A 1-D Laplacian with two rows on every rank: each rank takes part with a non-empty
-// matrix (subdomain direct solvers fail on empty ones, which impm's grid systems never have).
+// A 1-D Laplacian with the same number of rows on every rank: each rank takes part with a
+// non-empty matrix (subdomain direct solvers fail on empty ones, which impm's grid systems
+// never have), and enough rows that multigrid builds more than its coarse level, so that
+// MueLu checks the smoother's parameters too.
 void solveProbe(Thyra::LinearOpWithSolveFactoryBase<double>& lows,
                 const Teuchos::RCP<const Comm>& comm) {
-  const GO n = 2 * comm->getSize();
-  auto map = Teuchos::rcp(new Map(n, 2, 0, comm));
+  constexpr LO rows = 2048;
+  const GO n = GO(rows) * comm->getSize();
+  auto map = Teuchos::rcp(new Map(n, rows, 0, comm));
   auto A = Teuchos::rcp(new CrsMatrix(map, 3));
-  for (LO k = 0; k < 2; ++k) {
+  for (LO k = 0; k < rows; ++k) {
     const GO i = map->getGlobalElement(k);
     for (GO j = std::max<GO>(i - 1, 0); j <= std::min<GO>(i + 1, n - 1); ++j)
       A->insertGlobalValues(i, Teuchos::tuple<GO>(j), Teuchos::tuple<double>(i == j ? 2.0 : -1.0));
   }
   A->fillComplete();
+  // The guess is the solution: the set-up checks every sublist, the solve costs nothing.
   auto b = Teuchos::rcp(new Vector(map)), x = Teuchos::rcp(new Vector(map));
-  b->putScalar(1.0);
-  // Whether it converges is not checked: the deck's iteration limit may be meant for the
-  // real systems.
+  x->putScalar(1.0);
+  A->apply(*x, *b);
   auto op = Thyra::createConstLinearOp<double, LO, GO, Node>(
       Teuchos::rcp_implicit_cast<const Tpetra::Operator<double, LO, GO, Node>>(A));
   auto solver = Thyra::linearOpWithSolve(lows, op);
@@ -54,21 +57,84 @@ void solveLinearSystem(const Thyra::LinearOpWithSolveFactoryBase<double>& lows,
     throw NumericalError("a linear solve did not converge (" + status.message + ")");
 }
 
-Teuchos::ParameterList defaultLinearSolverParameters() {
-  Teuchos::ParameterList p("Linear Solver");
+namespace {
+
+Teuchos::ParameterList& belos(Teuchos::ParameterList& p, const std::string& method) {
   p.set("Linear Solver Type", "Belos");
   auto& belos = p.sublist("Linear Solver Types").sublist("Belos");
-  belos.set("Solver Type", "Pseudo Block GMRES");
-  auto& gmres = belos.sublist("Solver Types").sublist("Pseudo Block GMRES");
-  gmres.set("Maximum Iterations", 1000);
-  gmres.set("Num Blocks", 200);
-  gmres.set("Convergence Tolerance", 1e-10);
+  belos.set("Solver Type", method);
+  auto& solver = belos.sublist("Solver Types").sublist(method);
+  solver.set("Maximum Iterations", 1000);
+  solver.set("Convergence Tolerance", 1e-10);
+  return solver;
+}
+
+void ilut(Teuchos::ParameterList& p) {
   p.set("Preconditioner Type", "Ifpack2");
   auto& ifpack2 = p.sublist("Preconditioner Types").sublist("Ifpack2");
   ifpack2.set("Prec Type", "ILUT");
   auto& settings = ifpack2.sublist("Ifpack2 Settings");
   settings.set("fact: ilut level-of-fill", 2.0);
   settings.set("fact: drop tolerance", 0.0);
+}
+
+void jacobi(Teuchos::ParameterList& p) {
+  p.set("Preconditioner Type", "Ifpack2");
+  auto& ifpack2 = p.sublist("Preconditioner Types").sublist("Ifpack2");
+  ifpack2.set("Prec Type", "RELAXATION");
+  ifpack2.sublist("Ifpack2 Settings").set("relaxation: type", "Jacobi");
+}
+
+void smoothedAggregation(Teuchos::ParameterList& p, int dim, int ranks) {
+  p.set("Preconditioner Type", "MueLu");
+  auto& muelu = p.sublist("Preconditioner Types").sublist("MueLu");
+  muelu.set("verbosity", "none");
+  muelu.set("number of equations", dim);
+  muelu.set("multigrid algorithm", "sa");
+  muelu.set("smoother: type", "RELAXATION");
+  muelu.sublist("smoother: params").set("relaxation: type", "Symmetric Gauss-Seidel");
+  muelu.set("coarse: max size", 1000);
+  if (ranks == 1) {
+    muelu.set("coarse: type", "KLU2");
+  } else {
+    muelu.set("coarse: type", "RELAXATION");
+    auto& coarse = muelu.sublist("coarse: params");
+    coarse.set("relaxation: type", "Symmetric Gauss-Seidel");
+    coarse.set("relaxation: sweeps", 4);
+  }
+  muelu.set("reuse: type", "RP");
+}
+
+}  // namespace
+
+Teuchos::ParameterList defaultLinearSolverParameters(OperatorKind kind, int dim, int ranks) {
+  Teuchos::ParameterList p("Linear Solver");
+  switch (kind) {
+    case OperatorKind::small:
+      belos(p, "Pseudo Block GMRES").set("Num Blocks", 200);
+      ilut(p);
+      break;
+    case OperatorKind::stiffness:
+      belos(p, "Pseudo Block GMRES").set("Num Blocks", 200);
+      smoothedAggregation(p, dim, ranks);
+      break;
+    case OperatorKind::massDominated:
+      belos(p, "Pseudo Block CG");
+      jacobi(p);
+      break;
+  }
+  return p;
+}
+
+Teuchos::ParameterList mergedLinearSolverParameters(const Teuchos::ParameterList& deck,
+                                                    OperatorKind kind, int dim, int ranks) {
+  auto p = defaultLinearSolverParameters(kind, dim, ranks);
+  p.setParameters(deck);
+  if (!deck.isParameter("Preconditioner Type") && deck.isSublist("Preconditioner Types")) {
+    const auto& types = deck.sublist("Preconditioner Types");
+    if (types.numParams() == 1)
+      p.set("Preconditioner Type", types.name(types.begin()));
+  }
   return p;
 }
 
@@ -81,8 +147,7 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolveStrat
                                             "Ifpack2");
   Stratimikos::enableMueLu<LO, GO, Node>(builder);
 
-  auto list = Teuchos::rcp(new Teuchos::ParameterList(defaultLinearSolverParameters()));
-  list->setParameters(params);
+  auto list = Teuchos::rcp(new Teuchos::ParameterList(params));
   Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> lows;
   try {
     builder.setParameterList(list);

@@ -104,13 +104,16 @@ class LinearSystemSolved : public NOX::StatusTest::Generic {
 // Records ||R|| and the linear iterations of every Newton iteration.
 class IterationRecorder : public NOX::Observer {
  public:
-  IterationRecorder(NewtonReport& report, std::ostream* log, const std::string& indent)
-      : report_(report), log_(log), indent_(indent) {}
+  IterationRecorder(NewtonReport& report, std::ostream* log, const std::string& indent,
+                    ReusingPreconditionerFactory* reuse)
+      : report_(report), log_(log), indent_(indent), reuse_(reuse) {}
 
   void runPostIterate(const NOX::Solver::Generic& solver) override {
     const double norm = solver.getSolutionGroup().getNormF();
     const auto stats = solver.getSolverStatistics();
     const int linear = stats->linearSolve.lastLinearSolve_NumIterations;
+    if (reuse_)
+      reuse_->recordSolve(linear, stats->linearSolve.lastLinearSolve_Converged);
     const double update = relativeUpdate(solver);
     report_.residualNorms.push_back(norm);
     report_.linearIterations.push_back(linear);
@@ -126,6 +129,7 @@ class IterationRecorder : public NOX::Observer {
   NewtonReport& report_;
   std::ostream* log_;
   std::string indent_;
+  ReusingPreconditionerFactory* reuse_;
 };
 
 }  // namespace
@@ -156,12 +160,23 @@ Teuchos::ParameterList NewtonSolver::validParameters() {
   declareDouble(valid, "Linear Tolerance", 1e-10,
                 "Relative residual tolerance of each linear solve (overrides the Belos list's)",
                 Bounds::positive());
+  declareChoice(valid, "Preconditioner Reuse", "auto", {"auto", "on", "off"},
+                "Keep the preconditioner across Newton iterations and steps while the unknowns "
+                "stay the same and the Krylov iterations do not grow past Rebuild Factor times "
+                "those right after it was built (off: a new one for every linear solve; auto: "
+                "on with the multigrid default of 2-D stiffness-dominated steps)");
+  declareDouble(valid, "Rebuild Factor", 2.0,
+                "With Preconditioner Reuse: rebuild when a linear solve takes more than this "
+                "times the iterations of the first solve after the last build (at least 5)",
+                Bounds::atLeast(1.0));
   declareBool(valid, "Print Iterations", true,
               "Print every Newton iteration's residual norm and linear iteration count");
   declareOpaque(valid, "Linear Solver",
-                "A Stratimikos parameter list, merged over impm's default (Belos Pseudo Block "
-                "GMRES with an Ifpack2 ILUT preconditioner); Ifpack2 and MueLu are registered. "
-                "Checked by Stratimikos, Belos, Ifpack2 and MueLu at start-up.");
+                "A Stratimikos parameter list, merged over impm's default for the problem (1-D: "
+                "GMRES + Ifpack2 ILUT; 2-D stiffness-dominated steps: GMRES + MueLu smoothed "
+                "aggregation; 2-D mass-dominated steps: CG + Jacobi; see the user guide); "
+                "Ifpack2 and MueLu are registered.  Checked by Stratimikos, Belos, Ifpack2 and "
+                "MueLu at start-up.");
   declareOpaque(valid, "NOX",
                 "Extra NOX parameters (a NOX::Solver list), merged over the ones impm sets.  "
                 "Checked by NOX.");
@@ -169,14 +184,28 @@ Teuchos::ParameterList NewtonSolver::validParameters() {
 }
 
 NewtonSolver::NewtonSolver(const Teuchos::ParameterList& params,
-                           const Teuchos::RCP<const Comm>& comm)
+                           const Teuchos::RCP<const Comm>& comm, OperatorKind kind, int dim)
     : comm_(comm),
-      lows_(
-          createLinearSolveStrategy(params.sublist("Linear Solver"), comm, "Solver/Linear Solver")),
       relativeTolerance_(params.get<double>("Relative Tolerance")),
       absoluteTolerance_(params.get<double>("Absolute Tolerance")),
       updateTolerance_(params.get<double>("Update Tolerance")),
       maxIterations_(params.get<int>("Maximum Iterations")) {
+  const auto linear =
+      mergedLinearSolverParameters(params.sublist("Linear Solver"), kind, dim, comm->getSize());
+  lows_ = createLinearSolveStrategy(linear, comm, "Solver/Linear Solver");
+  if (auto inner = lows_->getPreconditionerFactory(); !inner.is_null()) {
+    ReuseRules rules;
+    // Reuse pays where building costs many Krylov iterations (multigrid); an ILUT of a
+    // small system costs less than the iterations a stale one adds, and on the nearly
+    // singular systems of nodes that barely touch a body a stale one can stall Newton.
+    const auto& reuse = params.get<std::string>("Preconditioner Reuse");
+    rules.enabled = reuseOn_ =
+        reuse == "on" || (reuse == "auto" && kind == OperatorKind::stiffness);
+    rules.rebuildFactor = params.get<double>("Rebuild Factor");
+    reuse_ = Teuchos::rcp(new ReusingPreconditionerFactory(
+        inner, linear.get<std::string>("Preconditioner Type") == "MueLu", rules));
+    prec_ = reuse_->createPrec();
+  }
   auto& p = noxParams_;
   p.set("Nonlinear Solver", "Line Search Based");
   p.sublist("Line Search").set("Method", params.get<std::string>("Line Search"));
@@ -193,9 +222,11 @@ NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vecto
   std::ostream* log = (log_ && comm_->getRank() == 0) ? log_ : nullptr;
   auto me = Teuchos::rcp(new MpmModelEvaluator(model, lows_));
   auto guess = Thyra::createVector<double, LO, GO, Node>(Teuchos::rcpFromRef(x), me->get_x_space());
-  auto group =
-      Teuchos::rcp(new NOX::Thyra::Group(NOX::Thyra::Vector(guess), me, me->create_W_op(), lows_,
-                                         Teuchos::null, Teuchos::null, Teuchos::null));
+  if (!reuse_.is_null())
+    reuse_->setNullSpace([model] { return model->nearNullSpace(); });
+  auto group = Teuchos::rcp(new NOX::Thyra::Group(
+      NOX::Thyra::Vector(guess), me, me->create_W_op(), lows_, reuseOn_ ? prec_ : Teuchos::null,
+      reuseOn_ ? reuse_ : Teuchos::null, Teuchos::null));
   group->computeF();
   const double initial = group->getNormF();
   report.residualNorms.push_back(initial);
@@ -223,8 +254,8 @@ NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vecto
 
   auto params = Teuchos::rcp(new Teuchos::ParameterList(noxParams_));
   params->sublist("Solver Options")
-      .set<Teuchos::RCP<NOX::Observer>>("Observer",
-                                        Teuchos::rcp(new IterationRecorder(report, log, indent_)));
+      .set<Teuchos::RCP<NOX::Observer>>(
+          "Observer", Teuchos::rcp(new IterationRecorder(report, log, indent_, reuse_.get())));
   auto solver = NOX::Solver::buildSolver(group, tests, params);
   StatusType status = Unconverged;
   try {
@@ -236,6 +267,8 @@ NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vecto
     report.failure = "linear solver failure: " + trilinosMessage(e.what());
   }
 
+  if (!reuse_.is_null())
+    reuse_->setNullSpace(nullptr);  // do not keep the model alive
   const auto& solution = dynamic_cast<const NOX::Thyra::Vector&>(solver->getSolutionGroup().getX());
   auto tpetra = Thyra::TpetraOperatorVectorExtraction<double, LO, GO, Node>::getConstTpetraVector(
       solution.getThyraRCPVector());

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "solver/LinearSolver.hpp"
+#include "solver/PreconditionerReuse.hpp"
 #include "solver/ResidualModel.hpp"
 
 namespace impm {
@@ -30,11 +32,25 @@ class NewtonSolver {
   // Valid parameters of the deck's Solver sublist.
   static Teuchos::ParameterList validParameters();
 
-  // `params`: a validated Solver sublist.  Builds (and checks) the linear solver.
-  NewtonSolver(const Teuchos::ParameterList& params, const Teuchos::RCP<const Comm>& comm);
+  // `params`: a validated Solver sublist.  Builds (and checks) the linear solver, the deck's
+  // list over the default for `kind` in `dim` dimensions.
+  NewtonSolver(const Teuchos::ParameterList& params, const Teuchos::RCP<const Comm>& comm,
+               OperatorKind kind = OperatorKind::small, int dim = 1);
 
   // Solves R(x) = 0 from the guess in x; x holds the last iterate on return.  Collective.
+  // The preconditioner of the last solve may serve this one (solver/PreconditionerReuse).
   NewtonReport solve(const Teuchos::RCP<ResidualModel>& model, Vector& x) const;
+
+  // The next solve builds its preconditioner from scratch (at checkpoints: the preconditioner
+  // is a cache, and a restarted run starts with an empty one).
+  void forgetPreconditioner() const {
+    if (!reuse_.is_null())
+      reuse_->forget();
+  }
+  // Preconditioners built and reused so far (zeros without a preconditioner).
+  ReuseCounts preconditionerCounts() const {
+    return reuse_.is_null() ? ReuseCounts{} : reuse_->counts();
+  }
 
   // The Stratimikos strategy, for the other linear solves of a step (mass projections).
   const Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>>& linearSolveStrategy() const {
@@ -50,6 +66,10 @@ class NewtonSolver {
  private:
   Teuchos::RCP<const Comm> comm_;
   Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> lows_;
+  // The Newton solves' preconditioner, kept from one solve to the next (null: none).
+  Teuchos::RCP<ReusingPreconditionerFactory> reuse_;
+  Teuchos::RCP<Thyra::PreconditionerBase<double>> prec_;
+  bool reuseOn_ = false;
   Teuchos::ParameterList noxParams_;
   double relativeTolerance_, absoluteTolerance_, updateTolerance_;
   int maxIterations_;

@@ -17,6 +17,9 @@ class ResidualModel {
   virtual void evaluate(const Vector& x, Vector* residual, CrsMatrix* jacobian) = 0;
   // True when R is affine in x: one Newton step with a converged linear solve solves it.
   virtual bool isLinear() const { return false; }
+  // The near-null space of the Jacobian's stiffness on unknownMap() (rigid-body modes, for
+  // multigrid), or null when the model has none to offer.
+  virtual Teuchos::RCP<MultiVector> nearNullSpace() const { return Teuchos::null; }
 };
 
 }  // namespace impm

@@ -411,12 +411,17 @@ def newton(args):
 def same(args):
     """Two decks must give the same particle table."""
     tables = []
-    for deck in (args.deck, args.other):
+    other = args.other or args.deck
+    for deck, extra, log in ((args.deck, args.set, args.expect_log),
+                             (other, args.set + args.other_set, args.other_expect_log)):
         out = tempfile.mkdtemp(prefix="impm-same-", dir=".")
-        r = run_impm(args, deck, out, ["Solver/Print Iterations=false"] + args.set)
+        r = run_impm(args, deck, out, ["Solver/Print Iterations=false"] + extra, np=args.np)
         if r.returncode != 0:
             print(r.stdout, r.stderr)
             sys.exit("impm failed on " + deck)
+        if log and not re.search(log, r.stdout):
+            print(r.stdout)
+            sys.exit("the log of %s %s does not match %r" % (deck, " ".join(extra), log))
         tables.append(read_csv(os.path.join(out, stem(deck) + "_particles.csv")))
         shutil.rmtree(out)
     worst = 0.0
@@ -427,6 +432,29 @@ def same(args):
         worst = max(worst, max(abs(x - y) for x, y in zip(a, b)) / scale)
     print("largest relative difference %.3e over columns %s" % (worst, ", ".join(args.columns)))
     sys.exit(1 if worst > args.rtol else 0)
+
+
+def iterations(args):
+    """Mean Krylov iterations per Newton iteration, one run per --size (a --set value), must
+    stay within --ratio of each other (a preconditioner whose cost per unknown is flat)."""
+    means = []
+    for size in args.size:
+        out = tempfile.mkdtemp(prefix="impm-iterations-", dir=".")
+        r = run_impm(args, args.deck, out, ["Solver/Print Iterations=false"] + args.set + size,
+                     np=args.np)
+        if r.returncode != 0:
+            print(r.stdout, r.stderr)
+            sys.exit("impm failed on " + args.deck)
+        rows = [row for row in read_csv(os.path.join(out, stem(args.deck) + "_history.csv"))
+                if int(float(row["step"])) > 0]
+        shutil.rmtree(out)
+        newton = sum(float(row["newton_iterations"]) for row in rows)
+        linear = sum(float(row["linear_iterations"]) for row in rows)
+        means.append(linear / newton)
+        print("%s: %.2f Krylov iterations per Newton iteration" % (" ".join(size), means[-1]))
+    ratio = max(means) / min(means)
+    print("largest / smallest = %.2f (allowed %.2f)" % (ratio, args.ratio))
+    sys.exit(1 if ratio >= args.ratio else 0)
 
 
 def docs(args):
@@ -561,10 +589,23 @@ def main():
 
     s = sub.add_parser("same")
     s.add_argument("--deck", required=True)
-    s.add_argument("--other", required=True)
+    s.add_argument("--other", help="the second deck (default: --deck, with --other-set)")
+    s.add_argument("--other-set", action="append", default=[],
+                   help="--set values of the second run only")
+    s.add_argument("--expect-log", help="a regular expression the first run's log must match")
+    s.add_argument("--other-expect-log", help="the same for the second run")
+    s.add_argument("--np", type=int, default=1)
     s.add_argument("--columns", nargs="+", default=["u", "strain", "stress"])
     s.add_argument("--rtol", type=float, default=1e-8)
     s.add_argument("--set", action="append", default=[])
+
+    it = sub.add_parser("iterations")
+    it.add_argument("--deck", required=True)
+    it.add_argument("--size", action="append", nargs="+", required=True,
+                    help="the --set values of one run (repeat for each size)")
+    it.add_argument("--ratio", type=float, default=2.0)
+    it.add_argument("--np", type=int, default=1)
+    it.add_argument("--set", action="append", default=[])
 
     d = sub.add_parser("docs")
     d.add_argument("--guide", required=True)
@@ -572,7 +613,7 @@ def main():
     args = p.parse_args()
     {"convergence": convergence, "ranks": ranks, "fails": fails, "docs": docs, "newton": newton,
      "same": same, "uniform": uniform, "translation": translation,
-     "history": history, "unloading": unloading, "energy": energy}[args.check](args)
+     "history": history, "unloading": unloading, "energy": energy, "iterations": iterations}[args.check](args)
 
 
 if __name__ == "__main__":

@@ -102,7 +102,9 @@ TEST(LinearSolver, MisspeltListIsAnInputError) {
   Teuchos::ParameterList bad;
   bad.set("Linear Solver Type", std::string("Belox"));
   try {
-    createLinearSolveStrategy(bad, comm, "Solver/Linear Solver");
+    createLinearSolveStrategy(
+        mergedLinearSolverParameters(bad, OperatorKind::small, 1, comm->getSize()), comm,
+        "Solver/Linear Solver");
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_EQ(e.path(), "Solver/Linear Solver");
@@ -118,7 +120,9 @@ TEST(LinearSolver, UnknownIfpack2SettingNamesItsSublist) {
       .sublist("Ifpack2 Settings")
       .set("fact: ilut level-of-fil", 2.0);
   try {
-    createLinearSolveStrategy(bad, comm, "Solver/Linear Solver");
+    createLinearSolveStrategy(
+        mergedLinearSolverParameters(bad, OperatorKind::small, 1, comm->getSize()), comm,
+        "Solver/Linear Solver");
     FAIL() << "no error";
   } catch (const InputError& e) {
     const std::string what = e.what();
@@ -129,8 +133,8 @@ TEST(LinearSolver, UnknownIfpack2SettingNamesItsSublist) {
   }
 }
 
-// 1-D Laplacian with Dirichlet ends, solved by every strategy impm documents.
-void expectSolves(const Teuchos::ParameterList& params) {
+// 1-D Laplacian with Dirichlet ends, solved by every strategy impm documents: the full list.
+void expectSolvesFull(const Teuchos::ParameterList& params) {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   const GO n = 200;
   auto map = Teuchos::rcp(new Map(n, 0, comm));
@@ -161,8 +165,35 @@ void expectSolves(const Teuchos::ParameterList& params) {
   EXPECT_LT(r.norm2(), 1e-8 * b->norm2());
 }
 
+// The same for a deck's list over the small-system default.
+void expectSolves(const Teuchos::ParameterList& deck) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  expectSolvesFull(mergedLinearSolverParameters(deck, OperatorKind::small, 1, comm->getSize()));
+}
+
 TEST(LinearSolver, DefaultGmresWithIlut) {
   expectSolves(Teuchos::ParameterList());
+}
+
+// The defaults of the other operator kinds (MueLu with one unknown per node here, CG with
+// Jacobi) solve it too, on any number of ranks (MueLu's coarse solve is iterative there).
+TEST(LinearSolver, DefaultOfEveryKindSolves) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  for (auto kind : {OperatorKind::stiffness, OperatorKind::massDominated}) {
+    auto p = defaultLinearSolverParameters(kind, 1, comm->getSize());
+    expectSolvesFull(p);
+  }
+}
+
+// A deck list that configures one preconditioner without naming it selects it.
+TEST(LinearSolver, ConfiguredPreconditionerIsSelected) {
+  Teuchos::ParameterList deck;
+  deck.sublist("Preconditioner Types").sublist("Ifpack2").set("Prec Type", std::string("RILUK"));
+  const auto p = mergedLinearSolverParameters(deck, OperatorKind::stiffness, 2, 1);
+  EXPECT_EQ(p.get<std::string>("Preconditioner Type"), "Ifpack2");
+  EXPECT_EQ(mergedLinearSolverParameters({}, OperatorKind::stiffness, 2, 1)
+                .get<std::string>("Preconditioner Type"),
+            "MueLu");
 }
 
 // Additive Schwarz with an exact LU of each rank's rows (Amesos2 KLU2 on a one-rank

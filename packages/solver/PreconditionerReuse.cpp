@@ -1,0 +1,86 @@
+#include "solver/PreconditionerReuse.hpp"
+
+#include <algorithm>
+
+#include <Thyra_DefaultPreconditioner.hpp>
+#include <Thyra_TpetraThyraWrappers.hpp>
+
+namespace impm {
+
+ReusingPreconditionerFactory::ReusingPreconditionerFactory(
+    Teuchos::RCP<Thyra::PreconditionerFactoryBase<double>> inner, bool muelu,
+    const ReuseRules& rules)
+    : inner_(std::move(inner)), muelu_(muelu), rules_(rules) {}
+
+void ReusingPreconditionerFactory::recordSolve(int iterations, bool converged) {
+  lastIterations_ = iterations;
+  lastConverged_ = converged;
+  if (firstIterations_ < 0)
+    firstIterations_ = iterations;
+}
+
+bool ReusingPreconditionerFactory::worthRebuilding() const {
+  if (!rules_.enabled || !lastConverged_ || firstIterations_ < 0)
+    return true;
+  const double limit = rules_.rebuildFactor * std::max(firstIterations_, rules_.minimumIterations);
+  return lastIterations_ > limit;
+}
+
+bool ReusingPreconditionerFactory::isCompatible(
+    const Thyra::LinearOpSourceBase<double>& fwdOpSrc) const {
+  return inner_->isCompatible(fwdOpSrc);
+}
+
+Teuchos::RCP<Thyra::PreconditionerBase<double>> ReusingPreconditionerFactory::createPrec() const {
+  return inner_->createPrec();
+}
+
+void ReusingPreconditionerFactory::initializePrec(
+    const Teuchos::RCP<const Thyra::LinearOpSourceBase<double>>& fwdOpSrc,
+    Thyra::PreconditionerBase<double>* prec, Thyra::ESupportSolveUse supportSolveUse) const {
+  using Extract = Thyra::TpetraOperatorVectorExtraction<double, LO, GO, Node>;
+  auto op = Extract::getConstTpetraOperator(fwdOpSrc->getOp());
+  const auto map = op->getRangeMap();
+  // Collective (every rank asks for the preconditioner together).
+  const bool sameUnknowns = !map_.is_null() && map->isSameAs(*map_);
+  const bool built = !prec->getUnspecifiedPrecOp().is_null();
+  if (sameUnknowns && built && !worthRebuilding()) {
+    ++counts_.reuses;
+    return;
+  }
+  if (!sameUnknowns) {
+    // Start over: a hierarchy (or factorisation) of other unknowns cannot be refreshed.
+    if (auto* defaultPrec = dynamic_cast<Thyra::DefaultPreconditioner<double>*>(prec))
+      defaultPrec->uninitialize();
+    if (muelu_ && nullSpace_)
+      inner_->getNonconstParameterList()->set("Nullspace", nullSpace_());
+  }
+  inner_->initializePrec(fwdOpSrc, prec, supportSolveUse);
+  map_ = map;
+  firstIterations_ = -1;
+  lastConverged_ = true;
+  ++counts_.builds;
+}
+
+void ReusingPreconditionerFactory::uninitializePrec(
+    Thyra::PreconditionerBase<double>* prec,
+    Teuchos::RCP<const Thyra::LinearOpSourceBase<double>>* fwdOpSrc,
+    Thyra::ESupportSolveUse* supportSolveUse) const {
+  inner_->uninitializePrec(prec, fwdOpSrc, supportSolveUse);
+  map_ = Teuchos::null;
+}
+
+void ReusingPreconditionerFactory::setParameterList(
+    const Teuchos::RCP<Teuchos::ParameterList>& list) {
+  inner_->setParameterList(list);
+}
+
+Teuchos::RCP<Teuchos::ParameterList> ReusingPreconditionerFactory::getNonconstParameterList() {
+  return inner_->getNonconstParameterList();
+}
+
+Teuchos::RCP<Teuchos::ParameterList> ReusingPreconditionerFactory::unsetParameterList() {
+  return inner_->unsetParameterList();
+}
+
+}  // namespace impm

@@ -1,0 +1,86 @@
+#pragma once
+// A preconditioner kept across Newton iterations and across steps while it still pays.
+//
+// The Jacobian of one Newton iteration differs little from the last one's, and often from
+// the last step's: rebuilding an incomplete factorisation or a multigrid hierarchy for
+// every linear solve costs more than the few Krylov iterations it saves.  This factory wraps
+// the deck's Stratimikos preconditioner factory and decides, each time NOX asks for a
+// preconditioner, whether to build one:
+//   - always when the unknowns changed (another row map: particles reached new nodes), or
+//     when the last linear solve failed;
+//   - when the last solve took more than `Rebuild Factor` times the iterations of the
+//     first solve after the last build (at least `Minimum Iterations`);
+//   - otherwise the preconditioner built from an earlier Jacobian stays: the Krylov solve
+//     still solves the current Jacobian to its tolerance, so only the cost changes.
+// With MueLu, a rebuild on unchanged unknowns keeps the aggregates and the prolongator
+// (MueLu's "reuse: type" RP) and recomputes the coarse operators and smoothers; new unknowns
+// start the hierarchy over, with the rigid-body modes of the new nodes as near-null space.
+
+#include <functional>
+
+#include <Teuchos_ParameterList.hpp>
+#include <Thyra_PreconditionerFactoryBase.hpp>
+
+#include "core/TpetraTypes.hpp"
+
+namespace impm {
+
+struct ReuseRules {
+  bool enabled = true;
+  double rebuildFactor = 2.0;
+  int minimumIterations = 5;
+};
+
+// What the factory did, for the step's report.
+struct ReuseCounts {
+  int builds = 0;  // preconditioners computed (including refreshes on the same unknowns)
+  int reuses = 0;  // requests served by the previous preconditioner
+};
+
+class ReusingPreconditionerFactory : public Thyra::PreconditionerFactoryBase<double> {
+ public:
+  // The near-null space of the operator being solved (MueLu), or null.
+  using NullSpace = std::function<Teuchos::RCP<MultiVector>()>;
+
+  // `inner`: the factory that builds the preconditioners; `muelu`: whether it is MueLu's
+  // (which takes the near-null space).
+  ReusingPreconditionerFactory(Teuchos::RCP<Thyra::PreconditionerFactoryBase<double>> inner,
+                               bool muelu, const ReuseRules& rules);
+
+  // The near-null space of the problem being solved (set by the Newton solver per solve).
+  void setNullSpace(NullSpace nullSpace) { nullSpace_ = std::move(nullSpace); }
+  // The outcome of the linear solve that used the current preconditioner.
+  void recordSolve(int iterations, bool converged);
+  ReuseCounts counts() const { return counts_; }
+  // The next request builds a new preconditioner from scratch, as a fresh run would (a run
+  // restarted from a checkpoint then follows the uninterrupted run's path bit for bit).
+  void forget() { map_ = Teuchos::null; }
+
+  bool isCompatible(const Thyra::LinearOpSourceBase<double>& fwdOpSrc) const override;
+  Teuchos::RCP<Thyra::PreconditionerBase<double>> createPrec() const override;
+  void initializePrec(const Teuchos::RCP<const Thyra::LinearOpSourceBase<double>>& fwdOpSrc,
+                      Thyra::PreconditionerBase<double>* prec,
+                      Thyra::ESupportSolveUse supportSolveUse) const override;
+  void uninitializePrec(Thyra::PreconditionerBase<double>* prec,
+                        Teuchos::RCP<const Thyra::LinearOpSourceBase<double>>* fwdOpSrc,
+                        Thyra::ESupportSolveUse* supportSolveUse) const override;
+  void setParameterList(const Teuchos::RCP<Teuchos::ParameterList>& list) override;
+  Teuchos::RCP<Teuchos::ParameterList> getNonconstParameterList() override;
+  Teuchos::RCP<Teuchos::ParameterList> unsetParameterList() override;
+
+ private:
+  bool worthRebuilding() const;
+
+  Teuchos::RCP<Thyra::PreconditionerFactoryBase<double>> inner_;
+  bool muelu_;
+  ReuseRules rules_;
+  NullSpace nullSpace_;
+  // initializePrec() is const in Thyra's interface; what it remembers is not.
+  mutable Teuchos::RCP<const Map> map_;  // the unknowns of the current preconditioner
+  mutable int firstIterations_ = -1;     // of the first solve after the last build
+  mutable int lastIterations_ = 0;
+  mutable bool lastConverged_ = true;
+  mutable ReuseCounts counts_;
+};
+
+}  // namespace impm

@@ -1,0 +1,83 @@
+#!/usr/bin/env python3
+"""Benchmark: the NX x NY column on square cells (the P1 deck, input/column_self_weight.xml,
+with linear-elastic E = 1 MPa, nu = 0, 2 x 2 particles per cell, 10 load steps, cpdi): the
+linear solvers side by side on 1 and 2 ranks.
+
+The grid is NX cells wide and NY tall over the height 50, so the column is 50 NX / NY wide.
+Configurations: impm's default for 2-D static steps (GMRES + MueLu smoothed aggregation
+with preconditioner reuse), the same without reuse, Ifpack2 ILUT (the 1-D default), and the
+deck's own additive Schwarz with a KLU2 LU per rank.  Records the wall time of the whole run
+(median of --repeat runs, configurations alternating), the Newton solve time, Krylov
+iterations per load step, peak memory (largest process) and per particle, and the RMS
+displacement error against the deck's neo-Hookean exact solution (linear elasticity differs
+from it by about 1e-2: the check is that every solver gives the same figure).
+
+usage: column_grid.py --impm build/drivers/impm [--grids 32x256 64x512] [--repeat 3]
+                      [--configs default ...] [--ranks 1 2] [--write doc/performance.md]
+"""
+
+import argparse
+import os
+import statistics
+
+from benchlib import ROOT, run_impm, write_section
+
+DECK = os.path.join(ROOT, "input", "column_self_weight.xml")
+LS = "Solver/Linear Solver/"
+CONFIGS = {
+    "default": [LS + "Preconditioner Type=MueLu"],
+    "default, no reuse": [LS + "Preconditioner Type=MueLu", "Solver/Preconditioner Reuse=off"],
+    "ILUT": [LS + "Preconditioner Types/Ifpack2/Prec Type=ILUT"],
+    "Schwarz KLU2": [],
+}
+
+
+def column(nx, ny):
+    width = 50.0 * nx / ny
+    return ["Grid/Cells={%d,%d}" % (nx, ny), "Grid/Length={%r,50}" % width,
+            "Bodies/column/Upper Corner={%r,50}" % width, "Materials/column/Model=linear-elastic",
+            "Time Integration/Load Steps=10", "Output/Every=1000"]
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__,
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--impm", required=True)
+    p.add_argument("--grids", nargs="+", default=["32x256", "64x512"])
+    p.add_argument("--repeat", type=int, default=3)
+    p.add_argument("--configs", nargs="+", default=list(CONFIGS))
+    p.add_argument("--ranks", type=int, nargs="+", default=[1, 2])
+    p.add_argument("--timeout", type=float, default=900.0)
+    p.add_argument("--write")
+    args = p.parse_args()
+    lines = ["| grid (particles) | solver | ranks | wall [s] | Newton solve [s] | Krylov per step "
+             "| memory [MB] | per particle [kB] | RMS error |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    for grid in args.grids:
+        nx, ny = (int(v) for v in grid.split("x"))
+        particles = 4 * nx * ny
+        cases = [(c, np) for c in args.configs for np in args.ranks]
+        runs = {case: [] for case in cases}
+        for _ in range(args.repeat):  # alternate the cases
+            for case in cases:
+                runs[case].append(run_impm(args.impm, DECK, column(nx, ny) + CONFIGS[case[0]],
+                                           np=case[1], timeout=args.timeout))
+        for (name, np), rs in runs.items():
+            if None in rs:
+                lines.append("| %s (%d) | %s | %d | stopped after %.0f s | | | | | |"
+                             % (grid, particles, name, np, args.timeout))
+                continue
+            steps = [r for r in rs[0].history if int(float(r["step"])) > 0]
+            krylov = sum(float(r["linear_iterations"]) for r in steps) / len(steps)
+            memory = max(r.memory for r in rs)
+            lines.append("| %s (%d) | %s | %d | %.2f | %.2f | %.1f | %.0f | %.2f | %s |" % (
+                grid, particles, name, np, statistics.median(r.wall for r in rs),
+                statistics.median(r.timer("Newton solve") for r in rs), krylov, memory,
+                memory * 1024.0 / particles * np, rs[0].rms))
+            print(lines[-1], flush=True)
+    if args.write:
+        write_section(args.write, "column-grid", "\n".join(lines) + "\n")
+
+
+if __name__ == "__main__":
+    main()
