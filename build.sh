@@ -68,6 +68,9 @@ case "$cmd" in
     ;;
   test)
     install_missing "${build_packages[@]}" "${test_packages[@]}"
+    # Configure again: a build directory made before the test packages were installed
+    # (./build.sh demo) has not registered the checks that need them.
+    [ -f "$build_dir/CMakeCache.txt" ] && cmake -S "$here" -B "$build_dir" >/dev/null
     build
     ctest --test-dir "$build_dir" --output-on-failure -j "$jobs" --timeout 900
     ;;

@@ -37,13 +37,14 @@ const char* kUsage =
     "  --set P=V          override parameter P (a path such as Grid/Cells) with value V,\n"
     "                     typed like P; arrays in Teuchos syntax: --set Grid/Cells={64}\n"
     "  --list-parameters  print every deck parameter with its type, default and meaning\n"
+    "  --kokkos-help      print the options of Kokkos (--kokkos-*), which impm passes on\n"
     "Exit status: 0 success, 1 bad input or checkpoint, 2 bad command line, 3 numerical\n"
     "failure, 4 failed verification check.\n";
 
 struct Arguments {
   std::string deck, outputDirectory, restart;
   std::vector<impm::Override> overrides;
-  bool help = false, list = false;
+  bool list = false;
 };
 
 Arguments parse(int argc, char** argv) {
@@ -55,9 +56,7 @@ Arguments parse(int argc, char** argv) {
         throw impm::InputError("", option + " needs a value");
       return std::string(argv[++i]);
     };
-    if (arg == "--help" || arg == "-h")
-      a.help = true;
-    else if (arg == "--list-parameters")
+    if (arg == "--list-parameters")
       a.list = true;
     else if (arg == "--output-dir")
       a.outputDirectory = value(arg);
@@ -78,7 +77,7 @@ Arguments parse(int argc, char** argv) {
     else
       throw impm::InputError("", "more than one deck given (" + a.deck + ", " + arg + ")");
   }
-  if (!a.help && !a.list && a.deck.empty())
+  if (!a.list && a.deck.empty())
     throw impm::InputError("", "no deck given");
   return a;
 }
@@ -115,21 +114,38 @@ void quietSingletonStart() {
 int main(int argc, char** argv) {
   impm::keepFreedMemory();  // before any allocation
   quietSingletonStart();    // before MPI starts
-  Tpetra::ScopeGuard scope(&argc, &argv);
+  // Kokkos::initialize takes --help too and prints its own options: impm's --help prints
+  // impm's usage only, and Kokkos' stays reachable as --kokkos-help.
+  bool help = false, kokkosHelp = false;
+  std::vector<char*> kept;
+  for (int i = 0; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (i > 0 && (arg == "--help" || arg == "-h"))
+      help = true;
+    else
+      kept.push_back(argv[i]);
+    kokkosHelp = kokkosHelp || arg == "--kokkos-help";
+  }
+  int keptCount = static_cast<int>(kept.size());
+  kept.push_back(nullptr);
+  char** keptArgs = kept.data();
+  Tpetra::ScopeGuard scope(&keptCount, &keptArgs);  // removes the --kokkos-* options
   auto comm = Tpetra::getDefaultComm();
   const bool root = comm->getRank() == 0;
+  if (kokkosHelp)
+    return 0;  // Kokkos printed its help
+  if (help) {
+    if (root)
+      std::cout << kUsage;
+    return 0;
+  }
   Arguments args;
   try {
-    args = parse(argc, argv);
+    args = parse(keptCount, keptArgs);
   } catch (const impm::InputError& e) {
     if (root)
       std::cerr << "impm: error: " << e.what() << "\n" << kUsage;
     return 2;
-  }
-  if (args.help) {
-    if (root)
-      std::cout << kUsage;
-    return 0;
   }
   const auto valid = impm::deckValidParameters();
   if (args.list) {
