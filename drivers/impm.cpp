@@ -25,8 +25,8 @@
 namespace {
 
 const char* kUsage =
-    "usage: impm [--output-dir DIR] [--restart CHECKPOINT] [--set Path/To/Param=value]... "
-    "deck.xml\n"
+    "usage: impm [--output-dir DIR] [--restart CHECKPOINT] [--set Path/To/Param=value]...\n"
+    "            [--verbose | --quiet] deck.xml\n"
     "       impm --list-parameters\n"
     "       impm --help\n"
     "\n"
@@ -36,6 +36,10 @@ const char* kUsage =
     "                     (Output/Checkpoint Every); run controls may change with --set\n"
     "  --set P=V          override parameter P (a path such as Grid/Cells) with value V,\n"
     "                     typed like P; arrays in Teuchos syntax: --set Grid/Cells={64}\n"
+    "  --verbose          print every step and every Newton iteration\n"
+    "  --quiet            print only errors, warnings and the final summary (by default:\n"
+    "                     a line per step while steps take a second or more, otherwise\n"
+    "                     one every few seconds, with the time elapsed and left)\n"
     "  --list-parameters  print every deck parameter with its type, default and meaning\n"
     "  --kokkos-help      print the options of Kokkos (--kokkos-*), which impm passes on\n"
     "Exit status: 0 success, 1 bad input or checkpoint, 2 bad command line, 3 numerical\n"
@@ -45,6 +49,7 @@ struct Arguments {
   std::string deck, outputDirectory, restart;
   std::vector<impm::Override> overrides;
   bool list = false;
+  impm::Verbosity verbosity = impm::Verbosity::normal;
 };
 
 Arguments parse(int argc, char** argv) {
@@ -58,6 +63,10 @@ Arguments parse(int argc, char** argv) {
     };
     if (arg == "--list-parameters")
       a.list = true;
+    else if (arg == "--verbose")
+      a.verbosity = impm::Verbosity::verbose;
+    else if (arg == "--quiet")
+      a.verbosity = impm::Verbosity::quiet;
     else if (arg == "--output-dir")
       a.outputDirectory = value(arg);
     else if (arg.rfind("--output-dir=", 0) == 0)
@@ -85,7 +94,8 @@ Arguments parse(int argc, char** argv) {
 template <int Dim>
 int runDeck(const Teuchos::ParameterList& deck, const Arguments& args,
             const Teuchos::RCP<const impm::Comm>& comm) {
-  impm::Simulation<Dim> simulation(deck, args.deck, args.outputDirectory, comm, args.restart);
+  impm::Simulation<Dim> simulation(deck, args.deck, args.outputDirectory, comm, args.restart,
+                                   args.verbosity);
   const auto failures = simulation.run();
   if (failures.empty())
     return 0;

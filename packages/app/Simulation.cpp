@@ -68,16 +68,23 @@ std::string format(double v) {
 template <int Dim>
 Simulation<Dim>::Simulation(const Teuchos::ParameterList& deck, const std::string& deckFile,
                             const std::string& outputDirectory,
-                            const Teuchos::RCP<const Comm>& comm, const std::string& restartFile)
-    : comm_(comm), deck_(deck), deckFile_(deckFile), outputDirectory_(outputDirectory) {
+                            const Teuchos::RCP<const Comm>& comm, const std::string& restartFile,
+                            Verbosity verbosity)
+    : comm_(comm),
+      deck_(deck),
+      deckFile_(deckFile),
+      outputDirectory_(outputDirectory),
+      verbosity_(verbosity) {
   IMPM_TIMER("set-up");
   // Local checks first, agreed on by every rank; then the collective set-up.
   collectively(*comm_, [&] { setUp(deck_); });
   collectively(*comm_, [&] { checkExplicitTimeStep(); });
   collectively(*comm_, [&] {
     newton_ = std::make_unique<NewtonSolver>(deck_.sublist("Solver"), comm_, operatorKind(), Dim);
-    newton_->setLog(deck_.sublist("Solver").get<bool>("Print Iterations") ? &std::cout : nullptr,
-                    "    ");
+    const bool iterations =
+        verbosity_ == Verbosity::verbose ||
+        (verbosity_ == Verbosity::normal && deck_.sublist("Solver").get<bool>("Print Iterations"));
+    newton_->setLog(iterations ? &std::cout : nullptr, "    ");
   });
   const GlobalId local = particles_.size();
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, local, Teuchos::outArg(totalParticles_));
@@ -248,7 +255,7 @@ std::vector<double> Simulation<Dim>::reactions() const {
 
 template <int Dim>
 void Simulation<Dim>::printHeader() const {
-  if (comm_->getRank() != 0)
+  if (comm_->getRank() != 0 || verbosity_ == Verbosity::quiet)
     return;
   const auto& grid = ownership_->grid();
   const auto& ti = deck_.sublist("Time Integration");
@@ -264,9 +271,10 @@ void Simulation<Dim>::printHeader() const {
 
 template <int Dim>
 void Simulation<Dim>::printProgress(const StepRecord& r, const std::vector<double>& F) const {
-  if (comm_->getRank() != 0)
-    return;
   const auto& ti = deck_.sublist("Time Integration");
+  const double fraction = progressFraction(r.time, r.loadFactor);
+  if (!progress_->due(r.last) || comm_->getRank() != 0)
+    return;
   std::cout << "  step " << r.step;
   if (isStatic(ti)) {
     std::cout << "  load " << std::setprecision(8) << r.loadFactor;
@@ -282,7 +290,15 @@ void Simulation<Dim>::printProgress(const StepRecord& r, const std::vector<doubl
     std::cout << "  F0 " << format(F[0]);
   if (right_)
     std::cout << "  FL " << format(F[1]);
-  std::cout << "\n";
+  std::cout << progress_->timing(fraction) << "\n";
+}
+
+// How much of the run is done: the load factor of a static run, the time over the final
+// time of a dynamic one.
+template <int Dim>
+double Simulation<Dim>::progressFraction(double time, double loadFactor) const {
+  const auto& ti = deck_.sublist("Time Integration");
+  return isStatic(ti) ? loadFactor : time / ti.get<double>("Final Time");
 }
 
 template <int Dim>
@@ -350,6 +366,8 @@ std::vector<std::string> Simulation<Dim>::run() {
   const auto stepper = makeStepper();
   CheckpointSeries checkpoints(deck_.sublist("Output"), outputDirectory_, prefix_);
   double finalTime = stepper->state().time;
+  progress_ = std::make_unique<ProgressLog>(
+      verbosity_, progressFraction(stepper->state().time, stepper->state().loadFactor));
   const StepCallback<Dim> onStep = [&](const StepRecord& r, const StepGrid<Dim>& step) {
     gridFields_->update(step);
     const auto F = reactions();

@@ -14,6 +14,7 @@
 #include "app/GridFields.hpp"
 #include "app/History.hpp"
 #include "app/Output.hpp"
+#include "app/ProgressLog.hpp"
 #include "app/Verification.hpp"
 #include "assembly/Kinematics.hpp"
 #include "solver/Contribution.hpp"
@@ -31,7 +32,7 @@ class Simulation {
   // checkpoint file the run continues from it; FileError when it cannot.
   Simulation(const Teuchos::ParameterList& deck, const std::string& deckFile,
              const std::string& outputDirectory, const Teuchos::RCP<const Comm>& comm,
-             const std::string& restart = "");
+             const std::string& restart = "", Verbosity verbosity = Verbosity::normal);
   ~Simulation();
 
   // Runs to the end; returns the failed verification checks (empty: all passed).  Throws
@@ -54,6 +55,7 @@ class Simulation {
   std::vector<double> reactions() const;
   void printHeader() const;
   void printProgress(const StepRecord& record, const std::vector<double>& F) const;
+  double progressFraction(double time, double loadFactor) const;
   std::vector<std::string> finish(double finalTime, const std::vector<std::string>& files) const;
 
   Teuchos::RCP<const Comm> comm_;
@@ -70,6 +72,8 @@ class Simulation {
   std::vector<std::shared_ptr<Contribution<Dim>>> conditions_;
   std::shared_ptr<RobinEnd> left_, right_;  // the ends whose forces are F0 and FL
   std::unique_ptr<NewtonSolver> newton_;
+  Verbosity verbosity_;
+  std::unique_ptr<ProgressLog> progress_;  // made when run() starts
   std::unique_ptr<Verification> verification_;
   std::unique_ptr<GridFields<Dim>> gridFields_;
   RunIdentity identity_;                     // what a checkpoint of this run must match
