@@ -17,7 +17,6 @@ class ProgressLog {
   // `fraction`: how much of the run is done at its start (a restart continues a run).
   ProgressLog(Verbosity verbosity, double fraction);
 
-  Verbosity verbosity() const { return verbosity_; }
   // Whether the step that has just ended gets a line (`last`: the run's last step).  Call
   // once per step.
   bool due(bool last);

@@ -196,12 +196,13 @@ void Simulation<Dim>::writeCheckpoint(const CheckpointSeries& series, int step,
   newton_->forgetPreconditioner();
 }
 
+constexpr GlobalId smallGridNodes = 4000;  // below: the small-system default (ILUT)
+
 // The kind of operator the Newton solves meet, which picks the default linear solver
 // (solver/LinearSolver.hpp).  A Newmark step's operator M / (beta dt^2) + K is
 // mass-dominated when dt is short against the wave transit time of a cell h/c: the ratio of
 // K's diagonal to the mass term's is about (c dt / h)^2 beta, so Jacobi leaves a condition
 // number of about 1 + 2 (c dt / h)^2 to CG, a handful of iterations below Courant number 2.
-constexpr GlobalId smallGridNodes = 4000;
 
 template <int Dim>
 OperatorKind Simulation<Dim>::operatorKind() const {

@@ -45,7 +45,7 @@ class DofMap {
 
   GO nodeDof(GlobalId node, int component) const { return node * Dim + component; }
   GO extraDof(int k) const { return numNodes_ * Dim + k; }
-  // Extra unknowns and the padding unknown: not displacement components of a node.
+  // Extra unknowns and the padding unknowns: not displacement components of a node.
   bool isExtraDof(GO dof) const { return dof >= numNodes_ * Dim; }
   // This rank's padding unknowns (see above): none, or Dim.
   const std::vector<GO>& paddingDofs() const { return padding_; }

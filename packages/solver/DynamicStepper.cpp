@@ -147,9 +147,9 @@ void DynamicStepper<Dim>::saveNodalState() {
   const auto& map = *u_->getMap();
   s.nodalDofs.clear(), s.nodalU.clear(), s.nodalV.clear(), s.nodalA.clear();
   auto u = u_->getData(), v = v_->getData(), a = a_->getData();
+  const auto& padding = fixedSystem_->dofs().paddingDofs();
   for (std::size_t k = 0; k < map.getNodeNumElements(); ++k) {
     const GO gid = map.getGlobalElement(static_cast<LO>(k));
-    const auto& padding = fixedSystem_->dofs().paddingDofs();
     if (std::find(padding.begin(), padding.end(), gid) != padding.end())
       continue;  // not an unknown of the problem
     s.nodalDofs.push_back(gid);

@@ -1,5 +1,4 @@
 #include "solver/GridSystem.hpp"
-#include "solver/RigidBodyModes.hpp"
 
 #include "assembly/EntryDofs.hpp"
 #include "assembly/Forces.hpp"
@@ -8,6 +7,7 @@
 #include "core/Collective.hpp"
 #include "core/Errors.hpp"
 #include "core/Timers.hpp"
+#include "solver/RigidBodyModes.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
 

@@ -7,9 +7,10 @@
 //   - small systems: every 1-D one (with its Robin rows) and 2-D grids of fewer than 4000
 //     nodes: GMRES + ILUT (close to an exact factorisation of a banded matrix, right with
 //     the boundary-force unknowns and with nodes that barely touch a body);
-//   - stiffness-dominated operators in 2-D (static steps, Newmark with time steps beyond a
-//     few wave transits of a cell): GMRES + MueLu smoothed aggregation, Dim unknowns per
-//     node, the rigid-body modes as near-null space, Chebyshev smoothing, a direct coarse
+//   - stiffness-dominated operators in 2-D (static steps, Newmark with time steps beyond
+//     twice the wave transit time of a cell): GMRES + MueLu smoothed aggregation, Dim
+//     unknowns per node, the rigid-body modes as near-null space, symmetric Gauss-Seidel
+//     smoothing, a direct coarse
 //     solve on one rank and an iterative one on several (Amesos2 KLU2 is wrong there);
 //   - mass-dominated operators (explicit steps, Newmark with short time steps: M/(beta dt^2)
 //     outweighs K): CG + Jacobi, no factorisation.

@@ -172,8 +172,9 @@ Teuchos::ParameterList NewtonSolver::validParameters() {
   declareBool(valid, "Print Iterations", true,
               "Print every Newton iteration's residual norm and linear iteration count");
   declareOpaque(valid, "Linear Solver",
-                "A Stratimikos parameter list, merged over impm's default for the problem (1-D: "
-                "GMRES + Ifpack2 ILUT; 2-D stiffness-dominated steps: GMRES + MueLu smoothed "
+                "A Stratimikos parameter list, merged over impm's default for the problem (1-D and "
+                "2-D grids under 4000 nodes: GMRES + Ifpack2 ILUT; 2-D stiffness-dominated steps: "
+                "GMRES + MueLu smoothed "
                 "aggregation; 2-D mass-dominated steps: CG + Jacobi; see the user guide); "
                 "Ifpack2 and MueLu are registered.  Checked by Stratimikos, Belos, Ifpack2 and "
                 "MueLu at start-up.");
@@ -193,14 +194,14 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList& params,
   const auto linear =
       mergedLinearSolverParameters(params.sublist("Linear Solver"), kind, dim, comm->getSize());
   lows_ = createLinearSolveStrategy(linear, comm, "Solver/Linear Solver");
-  if (auto inner = lows_->getPreconditionerFactory(); !inner.is_null()) {
+  // Reuse pays where building costs many Krylov iterations (multigrid); an ILUT of a small
+  // system costs less than the iterations a stale one adds, and on the nearly singular
+  // systems of nodes that barely touch a body a stale one can stall Newton.  Without reuse
+  // the strategy builds a preconditioner for every linear solve.
+  const auto& reuse = params.get<std::string>("Preconditioner Reuse");
+  const bool reuseOn = reuse == "on" || (reuse == "auto" && kind == OperatorKind::stiffness);
+  if (auto inner = lows_->getPreconditionerFactory(); reuseOn && !inner.is_null()) {
     ReuseRules rules;
-    // Reuse pays where building costs many Krylov iterations (multigrid); an ILUT of a
-    // small system costs less than the iterations a stale one adds, and on the nearly
-    // singular systems of nodes that barely touch a body a stale one can stall Newton.
-    const auto& reuse = params.get<std::string>("Preconditioner Reuse");
-    rules.enabled = reuseOn_ =
-        reuse == "on" || (reuse == "auto" && kind == OperatorKind::stiffness);
     rules.rebuildFactor = params.get<double>("Rebuild Factor");
     reuse_ = Teuchos::rcp(new ReusingPreconditionerFactory(
         inner, linear.get<std::string>("Preconditioner Type") == "MueLu", rules));
@@ -224,9 +225,8 @@ NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vecto
   auto guess = Thyra::createVector<double, LO, GO, Node>(Teuchos::rcpFromRef(x), me->get_x_space());
   if (!reuse_.is_null())
     reuse_->setNullSpace([model] { return model->nearNullSpace(); });
-  auto group = Teuchos::rcp(new NOX::Thyra::Group(
-      NOX::Thyra::Vector(guess), me, me->create_W_op(), lows_, reuseOn_ ? prec_ : Teuchos::null,
-      reuseOn_ ? reuse_ : Teuchos::null, Teuchos::null));
+  auto group = Teuchos::rcp(new NOX::Thyra::Group(NOX::Thyra::Vector(guess), me, me->create_W_op(),
+                                                  lows_, prec_, reuse_, Teuchos::null));
   group->computeF();
   const double initial = group->getNormF();
   report.residualNorms.push_back(initial);

@@ -66,10 +66,9 @@ class NewtonSolver {
  private:
   Teuchos::RCP<const Comm> comm_;
   Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> lows_;
-  // The Newton solves' preconditioner, kept from one solve to the next (null: none).
+  // The Newton solves' preconditioner, kept from one solve to the next (null: no reuse).
   Teuchos::RCP<ReusingPreconditionerFactory> reuse_;
   Teuchos::RCP<Thyra::PreconditionerBase<double>> prec_;
-  bool reuseOn_ = false;
   Teuchos::ParameterList noxParams_;
   double relativeTolerance_, absoluteTolerance_, updateTolerance_;
   int maxIterations_;

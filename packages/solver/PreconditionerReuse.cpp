@@ -20,7 +20,7 @@ void ReusingPreconditionerFactory::recordSolve(int iterations, bool converged) {
 }
 
 bool ReusingPreconditionerFactory::worthRebuilding() const {
-  if (!rules_.enabled || !lastConverged_ || firstIterations_ < 0)
+  if (!lastConverged_ || firstIterations_ < 0)
     return true;
   const double limit = rules_.rebuildFactor * std::max(firstIterations_, rules_.minimumIterations);
   return lastIterations_ > limit;

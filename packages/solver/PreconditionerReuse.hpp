@@ -26,7 +26,6 @@
 namespace impm {
 
 struct ReuseRules {
-  bool enabled = true;
   double rebuildFactor = 2.0;
   int minimumIterations = 5;
 };
