@@ -4,8 +4,10 @@
 //   impm --list-parameters
 //   impm --help
 //
-// Exit status: 0 success; 1 bad input or checkpoint (nothing written); 2 bad command line;
-// 3 numerical failure (outputs so far are readable); 4 a verification check failed.
+// Exit status: 0 success; 1 bad input or checkpoint (nothing written), or an output that
+// could not be written; 2 bad command line; 3 numerical failure (outputs so far are
+// readable); 4 a verification check failed; 5 stopped by SIGINT, SIGTERM or SIGUSR1 after
+// writing a checkpoint.
 
 #include <Tpetra_Core.hpp>
 
@@ -20,6 +22,7 @@
 #include "core/Errors.hpp"
 #include "core/MemoryPolicy.hpp"
 #include "core/Parameters.hpp"
+#include "core/StopRequest.hpp"
 #include "io/InputDeck.hpp"
 
 namespace {
@@ -42,8 +45,11 @@ const char* kUsage =
     "                     one every few seconds, with the time elapsed and left)\n"
     "  --list-parameters  print every deck parameter with its type, default and meaning\n"
     "  --kokkos-help      print the options of Kokkos (--kokkos-*), which impm passes on\n"
-    "Exit status: 0 success, 1 bad input or checkpoint, 2 bad command line, 3 numerical\n"
-    "failure, 4 failed verification check.\n";
+    "On SIGINT, SIGTERM or SIGUSR1 impm writes a checkpoint of the last finished step, prints\n"
+    "how to continue from it, and exits with status 5 (a second signal stops it at once;\n"
+    "under mpirun send SIGUSR1, which mpirun passes on at once).\n"
+    "Exit status: 0 success, 1 bad input, checkpoint or failed write, 2 bad command line,\n"
+    "3 numerical failure, 4 failed verification check, 5 stopped by a signal.\n";
 
 struct Arguments {
   std::string deck, outputDirectory, restart;
@@ -91,6 +97,31 @@ Arguments parse(int argc, char** argv) {
   return a;
 }
 
+// The command line that continues a stopped run: this one, restarting from `checkpoint` (a
+// run under mpirun needs the same launcher in front of it).
+std::string continueCommand(int argc, char** argv, const std::string& checkpoint) {
+  const auto quoted = [](const std::string& a) {
+    if (!a.empty() && a.find_first_of(" \t'\"\\$`!*?{}[]()<>|&;") == std::string::npos)
+      return a;
+    std::string q = "'";
+    for (char c : a)
+      q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+  };
+  std::string line = quoted(argv[0]) + " --restart " + quoted(checkpoint);
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--restart") {
+      ++i;  // and its value
+      continue;
+    }
+    if (arg.rfind("--restart=", 0) == 0)
+      continue;
+    line += " " + quoted(arg);
+  }
+  return line;
+}
+
 template <int Dim>
 int runDeck(const Teuchos::ParameterList& deck, const Arguments& args,
             const Teuchos::RCP<const impm::Comm>& comm) {
@@ -122,8 +153,9 @@ void quietSingletonStart() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  impm::keepFreedMemory();  // before any allocation
-  quietSingletonStart();    // before MPI starts
+  impm::keepFreedMemory();       // before any allocation
+  impm::ignoreFileSizeSignal();  // a write past ulimit -f fails with a message
+  quietSingletonStart();         // before MPI starts
   // Kokkos::initialize takes --help too and prints its own options: impm's --help prints
   // impm's usage only, and Kokkos' stays reachable as --kokkos-help.
   bool help = false, kokkosHelp = false;
@@ -141,6 +173,7 @@ int main(int argc, char** argv) {
   char** keptArgs = kept.data();
   Tpetra::ScopeGuard scope(&keptCount, &keptArgs);  // removes the --kokkos-* options
   auto comm = Tpetra::getDefaultComm();
+  impm::installStopHandlers();  // after MPI and Kokkos, so that theirs do not replace impm's
   const bool root = comm->getRank() == 0;
   if (kokkosHelp)
     return 0;  // Kokkos printed its help
@@ -185,6 +218,15 @@ int main(int argc, char** argv) {
     if (root)
       std::cerr << "impm: numerical failure: " << e.what() << "\n";
     return 3;
+  } catch (const impm::RunStopped& e) {
+    if (root)
+      std::cerr << "impm: " << e.what() << " (t = " << e.time()
+                << (e.abandoned() ? "; step " + std::to_string(e.step() + 1) + " was abandoned"
+                                  : "")
+                << "): checkpoint " << e.checkpoint()
+                << "; continue with: " << continueCommand(keptCount, keptArgs, e.checkpoint())
+                << "\n";
+    return impm::kStoppedExit;
   } catch (const std::exception& e) {
     if (root)
       std::cerr << "impm: error: " << e.what() << "\n";

@@ -6,6 +6,7 @@
 
 #include "app/shapes/ShapeFactory.hpp"
 #include "basis/CornerWeights.hpp"
+#include "core/Diagnostics.hpp"
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
 #include "core/Tensor.hpp"
@@ -386,6 +387,13 @@ void Bodies<Dim>::applyLoads(ParticleSet<Dim>& particles, double time) const {
       host.force(p, a) = host.mass(p) * b.bodyForce[a](args);
     if constexpr (Dim == 1)
       host.force(p, 0) += b.load(args) * host.volume(p);
+    for (int a = 0; a < Dim; ++a)
+      if (!std::isfinite(host.force(p, a))) {
+        std::ostringstream msg;
+        msg << (Dim == 1 ? "the distributed load or the body force" : "the body force")
+            << " is not finite at " << particleLabel(host, p) << ", t = " << time;
+        throw InputError("Bodies/" + b.name, msg.str());
+      }
   }
   Kokkos::deep_copy(particles.force, host.force);
 }

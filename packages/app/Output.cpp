@@ -193,7 +193,7 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
   std::error_code error;
   std::filesystem::create_directories(directory, error);
   if (error)
-    throw std::runtime_error("cannot create the output directory " + directory);
+    throw FileError(directory, "cannot create the output directory (" + error.message() + ")");
   const std::string base = directory + "/" + prefix;
   history_ = std::make_unique<CsvHistory>(base + "_history.csv", historyColumns,
                                           resume ? resume->step : -1);
@@ -402,8 +402,10 @@ void Output<Dim>::writeFields(double time, const ParticleSet<Dim>& particles,
 
 template <int Dim>
 void Output<Dim>::appendHistory(const std::vector<double>& row) const {
-  if (root_)
-    history_->append(row);
+  collectively(*ownership_.comm(), [&] {
+    if (root_)
+      history_->append(row);
+  });
 }
 
 template <int Dim>

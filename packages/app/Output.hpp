@@ -95,6 +95,7 @@ class Output {
   // Collective.
   void writeFields(double time, const ParticleSet<Dim>& particles, const MultiVector& gridFields,
                    const std::vector<double>& globals);
+  // Rank 0 appends the row; a failed write stops every rank.  Collective.
   void appendHistory(const std::vector<double>& row) const;
   // Paths of the files written, for the user.
   std::vector<std::string> files() const;

@@ -18,6 +18,7 @@
 #include "bc/RobinEnd.hpp"
 #include "core/Collective.hpp"
 #include "core/Errors.hpp"
+#include "core/StopRequest.hpp"
 #include "core/Timers.hpp"
 #include "io/InputDeck.hpp"
 #include "material/MaterialFactory.hpp"
@@ -102,6 +103,12 @@ Simulation<Dim>::Simulation(const Teuchos::ParameterList& deck, const std::strin
   } catch (const NumericalError& e) {
     throw InputError("Bodies", e.what());
   }
+  // So are loads that are not finite (a formula NaN at some particles) when the run starts;
+  // static runs evaluate them at Final Time.
+  const double loadTime = isStatic(ti) ? ti.get<double>("Final Time")
+                          : restored_  ? restored_->stepper.time
+                                       : 0.0;
+  collectively(*comm_, [&] { bodies_->applyLoads(particles_, loadTime); });
 }
 
 template <int Dim>
@@ -184,7 +191,7 @@ void Simulation<Dim>::restart(const std::string& file) {
 }
 
 template <int Dim>
-void Simulation<Dim>::writeCheckpoint(const CheckpointSeries& series, int step,
+void Simulation<Dim>::writeCheckpoint(CheckpointSeries& series, int step,
                                       const Stepper<Dim>& stepper,
                                       const Output<Dim>& output) const {
   IMPM_TIMER("checkpoint");
@@ -193,6 +200,8 @@ void Simulation<Dim>::writeCheckpoint(const CheckpointSeries& series, int step,
     state.contributions.push_back(c->state());
   impm::writeCheckpoint<Dim>(series.pathOf(step), identity_, particles_, totalParticles_, state,
                              gridFields_->values());
+  if (comm_->getRank() == 0)
+    series.written(step);
   newton_->forgetPreconditioner();
 }
 
@@ -246,6 +255,15 @@ void Simulation<Dim>::checkExplicitTimeStep() const {
   if (ti.get<std::string>("Position Update") == "primer")
     std::cout << "impm: warning: the primer's position update (eq. 1.53 as printed) is "
                  "unconditionally unstable: errors grow by sqrt(1 + (w dt)^2 / 2) per step\n";
+}
+
+template <int Dim>
+void Simulation<Dim>::applyLoads(double time) {
+  try {
+    collectively(*comm_, [&] { bodies_->applyLoads(particles_, time); });
+  } catch (const InputError& e) {  // a load formula that became NaN or inf during the run
+    throw NumericalError(e.what());
+  }
 }
 
 template <int Dim>
@@ -342,7 +360,7 @@ std::unique_ptr<Stepper<Dim>> Simulation<Dim>::makeStepper() {
       materials_,
       conditions_,
       *newton_,
-      [this](double t) { bodies_->applyLoads(particles_, t); },
+      [this](double t) { applyLoads(t); },
       [this](const double* x, double* u, double* v) { bodies_->initialNodalState(x, u, v); }};
   const auto& timeIntegration = deck_.sublist("Time Integration");
   std::unique_ptr<Stepper<Dim>> stepper;
@@ -366,6 +384,8 @@ std::vector<std::string> Simulation<Dim>::run() {
   const auto output = startOutput(history);
   const auto stepper = makeStepper();
   CheckpointSeries checkpoints(deck_.sublist("Output"), outputDirectory_, prefix_);
+  int checkpointed = -1;      // the step of the last checkpoint written
+  bool betweenSteps = false;  // the stop came after an accepted step, not inside one
   double finalTime = stepper->state().time;
   progress_ = std::make_unique<ProgressLog>(
       verbosity_, progressFraction(stepper->state().time, stepper->state().loadFactor));
@@ -382,12 +402,24 @@ std::vector<std::string> Simulation<Dim>::run() {
     }
     if (checkpoints.due(r.step, r.last)) {
       writeCheckpoint(checkpoints, r.step, *stepper, *output);
-      if (comm_->getRank() == 0)
-        checkpoints.written(r.step);
+      checkpointed = r.step;
     }
     finalTime = r.time;
+    if (!r.last && stopAgreed(*comm_)) {
+      betweenSteps = true;
+      throw StopRequest();
+    }
   };
-  stepper->run(onStep);
+  try {
+    stepper->run(onStep);
+  } catch (const StopRequest&) {
+    // After an accepted step, or in the middle of one (abandoned: nothing of it was
+    // committed): the checkpoint is of the last accepted step.
+    const auto& state = stepper->state();
+    if (checkpointed != state.step)
+      writeCheckpoint(checkpoints, state.step, *stepper, *output);
+    throw RunStopped(state.step, state.time, !betweenSteps, checkpoints.pathOf(state.step));
+  }
   return finish(finalTime, output->files());
 }
 
@@ -397,13 +429,15 @@ std::vector<std::string> Simulation<Dim>::finish(double finalTime,
   const auto F = reactions();
   const auto result = verification_->check<Dim>(particles_, comm_, finalTime, F[0], F[1]);
   const auto counts = newton_->preconditionerCounts();
-  if (comm_->getRank() == 0) {
+  const std::string path = outputDirectory_ + "/" + prefix_ + "_verification.csv";
+  collectively(*comm_, [&] {
+    if (comm_->getRank() != 0)
+      return;
     if (counts.builds + counts.reuses > 0)
       std::cout << "  preconditioner: built " << counts.builds << " times, reused " << counts.reuses
                 << " times\n";
     for (const auto& line : result.report)
       std::cout << "  verification: " << line << "\n";
-    const std::string path = outputDirectory_ + "/" + prefix_ + "_verification.csv";
     writeCsvTable(path, {"cells", "points", "rms_error", "max_error", "F0", "FL"},
                   {{double(ownership_->grid().cells[0])},
                    {double(totalParticles_)},
@@ -415,7 +449,7 @@ std::vector<std::string> Simulation<Dim>::finish(double finalTime,
     for (const auto& f : files)
       std::cout << " " << f;
     std::cout << " " << path << "\n";
-  }
+  });
   if (deck_.sublist("Output").get<bool>("Timers"))
     Teuchos::TimeMonitor::summarize(comm_.ptr(), std::cout, false, true, false, Teuchos::Union,
                                     "impm: ");

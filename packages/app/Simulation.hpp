@@ -36,7 +36,8 @@ class Simulation {
   ~Simulation();
 
   // Runs to the end; returns the failed verification checks (empty: all passed).  Throws
-  // NumericalError when the computation cannot go on.
+  // NumericalError when the computation cannot go on, RunStopped after a stop signal
+  // (core/StopRequest.hpp) once the checkpoint of the last accepted step is written.
   std::vector<std::string> run();
 
   const ParticleSet<Dim>& particles() const { return particles_; }
@@ -45,7 +46,8 @@ class Simulation {
   void setUp(const Teuchos::ParameterList& deck);
   void restart(const std::string& file);
   void addDerivedFields();
-  void writeCheckpoint(const CheckpointSeries& series, int step, const Stepper<Dim>& stepper,
+  // Collective; rank 0 then updates the series (the newest link, the oldest removed).
+  void writeCheckpoint(CheckpointSeries& series, int step, const Stepper<Dim>& stepper,
                        const Output<Dim>& output) const;
   // The output files (continued on a restart) with the initial state written (not on one).
   std::unique_ptr<Output<Dim>> startOutput(const History<Dim>& history);
@@ -53,6 +55,9 @@ class Simulation {
   void checkExplicitTimeStep() const;
   OperatorKind operatorKind() const;
   std::vector<double> reactions() const;
+  // The particles' external forces at `time`, on every rank; NumericalError when a load
+  // formula is not finite at a particle.  Collective.
+  void applyLoads(double time);
   void printHeader() const;
   void printProgress(const StepRecord& record, const std::vector<double>& F) const;
   double progressFraction(double time, double loadFactor) const;

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "basis/ParticleGridMap.hpp"
+#include "core/Diagnostics.hpp"
 #include "core/Errors.hpp"
 #include "core/ParticleSet.hpp"
 
@@ -85,13 +86,8 @@ ParticleGridMap<Dim, Space> buildParticleGridMap(const Weights& weights,
       },
       Kokkos::Min<int>(firstOutside));
   if (firstOutside < n) {
-    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.x);
-    auto id = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.id);
     std::ostringstream msg;
-    msg << "particle " << id(firstOutside) << " at x = (";
-    for (int d = 0; d < Dim; ++d)
-      msg << (d ? ", " : "") << x(firstOutside, d);
-    msg << ") has left the grid [";
+    msg << particleLabel(particles, firstOutside) << " has left the grid [";
     for (int d = 0; d < Dim; ++d)
       msg << (d ? " x [" : "") << grid.origin[d] << ", " << grid.upper(d) << "]";
     throw NumericalError(msg.str() + " (its integration domain reaches outside it)");

@@ -1,8 +1,18 @@
 #include "core/Errors.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <sstream>
 
 namespace impm {
+
+std::string systemReason() {
+  return systemReason(errno);
+}
+
+std::string systemReason(int error) {
+  return error ? std::strerror(error) : "unknown reason";
+}
 
 std::string trilinosMessage(const std::string& what) {
   // The first line that reports an error with the lines of its paragraph (Teuchos says

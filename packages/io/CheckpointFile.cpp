@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "core/Errors.hpp"
+#include "io/CapturedOutput.hpp"
 
 namespace impm {
 
@@ -57,32 +58,42 @@ std::uint64_t rowHash(std::size_t row, const void* data, std::size_t bytes) {
 
 CheckpointWriter::CheckpointWriter(const std::string& path)
     : path_(path), temporary_(path + ".tmp") {
-  check(nc_create(temporary_.c_str(), NC_CLOBBER | NC_NETCDF4, &id_), temporary_,
-        "cannot create the checkpoint");
+  // CDF-5, not netCDF-4: a write that fails (a full disk, ulimit -f) inside HDF5 leaves it a
+  // file that it crashes on at exit (HDF5 1.10.8); the classic format has no such state, and
+  // the checksums find a truncated file as HDF5 would.
+  require(nc_create(temporary_.c_str(), NC_CLOBBER | NC_64BIT_DATA, &id_), "create");
   const int version = kCheckpointVersion;
-  check(nc_put_att_int(id_, NC_GLOBAL, kVersion, NC_INT, 1, &version), temporary_, "version");
+  require(nc_put_att_int(id_, NC_GLOBAL, kVersion, NC_INT, 1, &version), "version");
+}
+
+void CheckpointWriter::require(int status, const std::string& what) const {
+  if (status != NC_NOERR)  // named by the checkpoint it was to become; the .tmp file goes
+    throw FileError(path_,
+                    "cannot write the checkpoint (" + what + ": " + nc_strerror(status) + ")");
 }
 
 CheckpointWriter::~CheckpointWriter() {
   if (id_ >= 0) {
-    nc_close(id_);
+    // Abandoned (a failed write): dropped without another attempt to write it.
+    const CapturedOutput quiet;
+    nc_abort(id_);
     std::remove(temporary_.c_str());
   }
 }
 
 void CheckpointWriter::attribute(const std::string& name, const std::string& value) {
-  check(nc_put_att_text(id_, NC_GLOBAL, name.c_str(), value.size(), value.c_str()), temporary_,
-        "attribute " + name);
+  require(nc_put_att_text(id_, NC_GLOBAL, name.c_str(), value.size(), value.c_str()),
+          "attribute " + name);
 }
 
 void CheckpointWriter::attribute(const std::string& name, const std::vector<double>& values) {
-  check(nc_put_att_double(id_, NC_GLOBAL, name.c_str(), NC_DOUBLE, values.size(), values.data()),
-        temporary_, "attribute " + name);
+  require(nc_put_att_double(id_, NC_GLOBAL, name.c_str(), NC_DOUBLE, values.size(), values.data()),
+          "attribute " + name);
 }
 
 void CheckpointWriter::attribute(const std::string& name, const std::vector<long long>& values) {
-  check(nc_put_att_longlong(id_, NC_GLOBAL, name.c_str(), NC_INT64, values.size(), values.data()),
-        temporary_, "attribute " + name);
+  require(nc_put_att_longlong(id_, NC_GLOBAL, name.c_str(), NC_INT64, values.size(), values.data()),
+          "attribute " + name);
 }
 
 void CheckpointWriter::declare(const std::string& name, std::size_t rows, std::size_t columns,
@@ -90,22 +101,25 @@ void CheckpointWriter::declare(const std::string& name, std::size_t rows, std::s
   if (!defining_)
     throw std::logic_error("checkpoint variable " + name + " declared after data");
   int dims[2];
-  check(nc_def_dim(id_, (name + "_rows").c_str(), rows, &dims[0]), temporary_, name);
-  check(nc_def_dim(id_, (name + "_columns").c_str(), columns, &dims[1]), temporary_, name);
+  require(nc_def_dim(id_, (name + "_rows").c_str(), rows, &dims[0]), name);
+  require(nc_def_dim(id_, (name + "_columns").c_str(), columns, &dims[1]), name);
   int var = 0;
-  check(nc_def_var(id_, name.c_str(), integer ? NC_INT64 : NC_DOUBLE, 2, dims, &var), temporary_,
-        name);
+  require(nc_def_var(id_, name.c_str(), integer ? NC_INT64 : NC_DOUBLE, 2, dims, &var), name);
+  // The checksum's place, filled in with the data: the classic format takes a new attribute
+  // only while defining, and a changed value of the same size at any time.
+  const unsigned long long none = 0;
+  require(nc_put_att_ulonglong(id_, var, kChecksum, NC_UINT64, 1, &none), name);
 }
 
 void CheckpointWriter::endDefinitions() {
   if (defining_)
-    check(nc_enddef(id_), temporary_, "definitions");
+    require(nc_enddef(id_), "definitions");
   defining_ = false;
 }
 
 int CheckpointWriter::variable(const std::string& name) const {
   int var = 0;
-  check(nc_inq_varid(id_, name.c_str(), &var), temporary_, "variable " + name);
+  require(nc_inq_varid(id_, name.c_str(), &var), "variable " + name);
   return var;
 }
 
@@ -134,9 +148,9 @@ void CheckpointWriter::writeValues(const std::string& name, const std::vector<T>
   std::size_t columns = 0;
   nc_inq_vardimid(id_, var, dims);
   nc_inq_dimlen(id_, dims[1], &columns);
-  check(put(id_, var, values), temporary_, "variable " + name);
+  require(put(id_, var, values), "variable " + name);
   const unsigned long long sum = checksum(values, columns);
-  check(nc_put_att_ulonglong(id_, var, kChecksum, NC_UINT64, 1, &sum), temporary_, name);
+  require(nc_put_att_ulonglong(id_, var, kChecksum, NC_UINT64, 1, &sum), name);
 }
 
 void CheckpointWriter::write(const std::string& name, const std::vector<double>& values) {
@@ -148,7 +162,7 @@ void CheckpointWriter::write(const std::string& name, const std::vector<long lon
 }
 
 void CheckpointWriter::commit() {
-  check(nc_close(id_), temporary_, "cannot close the checkpoint");
+  require(nc_close(id_), "close");
   id_ = -1;
   syncFile(temporary_);
   std::error_code error;
@@ -179,6 +193,33 @@ CheckpointReader::CheckpointReader(const std::string& path) : path_(path) {
     throw FileError(path, "has checkpoint format version " + std::to_string(version_) +
                               "; this impm reads format versions up to " +
                               std::to_string(kCheckpointVersion));
+  // A classic netCDF file cut short still opens (and reads zeros where its data is missing):
+  // its variables must fit in it.
+  const auto size = std::filesystem::file_size(path);
+  if (size < dataBytes())
+    throw FileError(path, "is not a readable checkpoint (truncated: its variables hold " +
+                              std::to_string(dataBytes()) + " bytes, the file has " +
+                              std::to_string(size) + ")");
+}
+
+std::uintmax_t CheckpointReader::dataBytes() const {
+  int variables = 0;
+  nc_inq_nvars(id_, &variables);
+  std::uintmax_t bytes = 0;
+  for (int var = 0; var < variables; ++var) {
+    int ndims = 0, dims[NC_MAX_VAR_DIMS];
+    nc_type type;
+    std::size_t typeSize = 0, count = 1;
+    nc_inq_var(id_, var, nullptr, &type, &ndims, dims, nullptr);
+    nc_inq_type(id_, type, nullptr, &typeSize);
+    for (int d = 0; d < ndims; ++d) {
+      std::size_t length = 0;
+      nc_inq_dimlen(id_, dims[d], &length);
+      count *= length;
+    }
+    bytes += count * typeSize;
+  }
+  return bytes;
 }
 
 CheckpointReader::~CheckpointReader() {

@@ -1,5 +1,5 @@
 #pragma once
-// A checkpoint on disk: a netCDF-4 file (HDF5 underneath) of named attributes and 2-D
+// A checkpoint on disk: a netCDF file (the classic CDF-5 format) of named attributes and 2-D
 // variables (rows x columns of doubles or 64-bit integers), with a checksum per variable
 // (the sum over rows of a hash of the row's index and bytes, so that it can be checked
 // while the rows are read in pieces).
@@ -39,6 +39,8 @@ class CheckpointWriter {
 
  private:
   int variable(const std::string& name) const;
+  // FileError(path, "cannot write the checkpoint (what: netCDF's reason)") on an error.
+  void require(int status, const std::string& what) const;
   void endDefinitions();
   template <class T>
   void writeValues(const std::string& name, const std::vector<T>& values);
@@ -75,6 +77,8 @@ class CheckpointReader {
 
  private:
   int variable(const std::string& name) const;
+  // The bytes of all the variables' values.
+  std::uintmax_t dataBytes() const;
   template <class T>
   std::vector<T> readRows(const std::string& name, std::size_t first, std::size_t count,
                           bool checked) const;

@@ -1,26 +1,36 @@
 #include "io/CsvFile.hpp"
 
+#include "core/Collective.hpp"
+#include "core/Errors.hpp"
 #include "core/MpiComm.hpp"
+#include "io/CapturedOutput.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <climits>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
 
 namespace impm {
 
 namespace {
 
+// FileError(path, "cannot write (<the system's reason>)") unless the whole text reached the
+// file (fclose too can fail: the last block is written there).
 void writeOrThrow(const std::string& path, const char* mode, const std::string& text) {
+  errno = 0;
   FILE* f = std::fopen(path.c_str(), mode);
-  const bool written = f && std::fwrite(text.data(), 1, text.size(), f) == text.size();
-  if (f)
-    std::fclose(f);
-  if (!written)
-    throw std::runtime_error("cannot write " + path);
+  if (!f)
+    throw FileError(path, "cannot write (" + systemReason() + ")");
+  const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+  const int reason = errno;
+  if (std::fclose(f) != 0 || !written)
+    throw FileError(path, "cannot write (" + systemReason(written ? errno : reason) + ")");
 }
 
 // Appends x in the shortest form that reads back to the same double (std::to_chars without
@@ -47,6 +57,17 @@ void appendRow(std::string& out, std::size_t n, const Value& value) {
     appendNumber(out, value(c));
   }
   out += '\n';
+}
+
+// The system's reason of the failed MPI-IO call: errno when the MPI library left one (Open
+// MPI's file layer does), otherwise MPI's own text for the error code.
+std::string mpiReason(int error) {
+  if (errno != 0)
+    return systemReason();
+  char text[MPI_MAX_ERROR_STRING];
+  int length = 0;
+  MPI_Error_string(error, text, &length);
+  return std::string(text, length);
 }
 
 }  // namespace
@@ -79,9 +100,14 @@ CsvHistory::CsvHistory(const std::string& path, const std::vector<std::string>& 
     }
   }
   // Replaced in one rename, so a crash leaves the old file or the new one.
-  writeOrThrow(path + ".tmp", "w", text);
+  try {
+    writeOrThrow(path + ".tmp", "w", text);
+  } catch (const FileError& e) {  // named by the file it was to become
+    std::remove((path + ".tmp").c_str());
+    throw FileError(path, e.what());
+  }
   if (std::rename((path + ".tmp").c_str(), path.c_str()) != 0)
-    throw std::runtime_error("cannot write " + path);
+    throw FileError(path, "cannot rename " + path + ".tmp into place (" + systemReason() + ")");
 }
 
 void CsvHistory::append(const std::vector<double>& row) const {
@@ -89,12 +115,28 @@ void CsvHistory::append(const std::vector<double>& row) const {
     throw std::logic_error("history row has the wrong length");
   std::string text;
   appendRow(text, row.size(), [&](std::size_t c) { return row[c]; });
-  writeOrThrow(path_, "a", text);
+  std::error_code error;
+  const auto before = std::filesystem::file_size(path_, error);
+  try {
+    writeOrThrow(path_, "a", text);
+  } catch (const FileError&) {
+    if (!error)  // a row written in part (up to a file size limit) is taken back
+      std::filesystem::resize_file(path_, before, error);
+    throw;
+  }
 }
 
 void writeCsvTable(const std::string& path, const std::vector<std::string>& columns,
                    const std::vector<std::vector<double>>& values) {
-  writeOrThrow(path, "w", header(columns) + formatCsvRows(values));
+  const std::string temporary = path + ".tmp";  // renamed into place once complete
+  try {
+    writeOrThrow(temporary, "w", header(columns) + formatCsvRows(values));
+    if (std::rename(temporary.c_str(), path.c_str()) != 0)
+      throw FileError(path, "cannot rename " + temporary + " into place (" + systemReason() + ")");
+  } catch (const FileError& e) {
+    std::remove(temporary.c_str());
+    throw FileError(path, e.what());
+  }
 }
 
 void writeCsvTableCollectively(const std::string& path, const Teuchos::Comm<int>& comm,
@@ -108,23 +150,52 @@ void writeCsvTableCollectively(const std::string& path, const Teuchos::Comm<int>
   MPI_Exscan(&size, &offset, 1, MPI_LONG_LONG, MPI_SUM, raw);
   if (comm.getRank() == 0)
     offset = 0;  // MPI_Exscan leaves rank 0's result undefined
+  // Into a new file renamed into place once complete, so that a failed write leaves the
+  // table of the last output step.
+  const std::string temporary = path + ".tmp";
   MPI_File file;
-  int error =
-      MPI_File_open(raw, path.c_str(), MPI_MODE_CREATE | MPI_MODE_WRONLY, MPI_INFO_NULL, &file);
+  errno = 0;  // mpiReason reads it
+  int error = MPI_File_open(raw, temporary.c_str(), MPI_MODE_CREATE | MPI_MODE_WRONLY,
+                            MPI_INFO_NULL, &file);
   if (error != MPI_SUCCESS)  // collective: every rank sees the failure
-    throw std::runtime_error("cannot write " + path);
+    throw FileError(path, "cannot write (" + mpiReason(error) + ")");
+  std::string failure;  // this rank's, with the reason taken when it happened
+  std::optional<CapturedOutput> quiet(std::in_place);  // Open MPI's file layer prints failures
   error = MPI_File_set_size(file, 0);  // an older, longer file must not leave a tail
+  // A write may end short without an error (Open MPI's file layer at a file size limit): the
+  // rest is written again, and a write that makes no progress is a failure.
   for (std::size_t done = 0; error == MPI_SUCCESS && done < text.size();) {
     const int chunk = static_cast<int>(std::min<std::size_t>(text.size() - done, INT_MAX / 2));
+    MPI_Status status;
+    errno = 0;
     error = MPI_File_write_at(file, offset + static_cast<MPI_Offset>(done), text.data() + done,
-                              chunk, MPI_CHAR, MPI_STATUS_IGNORE);
-    done += static_cast<std::size_t>(chunk);
+                              chunk, MPI_CHAR, &status);
+    int written = 0;
+    if (error == MPI_SUCCESS)
+      MPI_Get_count(&status, MPI_CHAR, &written);
+    if (error == MPI_SUCCESS && written <= 0)
+      error = MPI_ERR_IO;
+    done += static_cast<std::size_t>(std::max(written, 0));
   }
-  int failed = error != MPI_SUCCESS, anyFailed = 0;
-  MPI_Allreduce(&failed, &anyFailed, 1, MPI_INT, MPI_MAX, raw);
-  MPI_File_close(&file);
-  if (anyFailed)
-    throw std::runtime_error("cannot write " + path);
+  if (error != MPI_SUCCESS)
+    failure = mpiReason(error);
+  error = MPI_File_close(&file);  // collective; the last bytes may be written here
+  if (error != MPI_SUCCESS && failure.empty())
+    failure = mpiReason(error);
+  quiet.reset();
+  try {
+    collectively(comm, [&] {
+      if (!failure.empty())
+        throw FileError(path, "cannot write (" + failure + ")");
+      if (comm.getRank() == 0 && std::rename(temporary.c_str(), path.c_str()) != 0)
+        throw FileError(path,
+                        "cannot rename " + temporary + " into place (" + systemReason() + ")");
+    });
+  } catch (const FileError&) {
+    if (comm.getRank() == 0)
+      std::remove(temporary.c_str());
+    throw;
+  }
 }
 
 }  // namespace impm

@@ -1,19 +1,54 @@
 #include "io/ExodusFile.hpp"
 
 #include <exodusII.h>
+#include <netcdf.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <filesystem>
 #include <stdexcept>
+
+#include "core/Errors.hpp"
+#include "io/CapturedOutput.hpp"
 
 namespace impm {
 
 namespace {
 
-void check(int status, const std::string& path, const char* what) {
-  if (status < 0)
-    throw std::runtime_error("cannot write Exodus file " + path + " (" + what + ")");
+// FileError naming the file, the step of the writing that failed and the reason: the
+// system's (errno; netCDF also passes it on as a positive code), netCDF's or exodusII's, or
+// what the libraries printed (`said`, which keeps it off the terminal).
+void check(int status, const std::string& path, const char* what, const CapturedOutput& said) {
+  if (status >= 0)
+    return;
+  const int system = errno;
+  const char *message = nullptr, *function = nullptr;
+  int code = 0;
+  ex_get_err(&message, &function, &code);
+  const std::string printed = said.firstLine();
+  const std::string reason = code > 0              ? systemReason(code)
+                             : system != 0         ? systemReason(system)
+                             : code < 0            ? std::string(nc_strerror(code))
+                             : !printed.empty()    ? printed
+                             : message && *message ? std::string(message)
+                                                   : std::string("unknown reason");
+  throw FileError(path, std::string("cannot write the Exodus file (") + what + ": " + reason + ")");
 }
+
+// Closes an open file when a failed write leaves the function early (a file closed by the
+// normal path is released first).
+struct OpenFile {
+  int id;
+  ~OpenFile() {
+    if (id >= 0)
+      ex_close(id);
+  }
+  int release() {
+    const int open = id;
+    id = -1;
+    return open;
+  }
+};
 
 std::vector<char*> cStrings(const std::vector<std::string>& names) {
   std::vector<char*> out;
@@ -22,22 +57,23 @@ std::vector<char*> cStrings(const std::vector<std::string>& names) {
   return out;
 }
 
-int openForAppend(const std::string& path) {
+int openForAppend(const std::string& path, const CapturedOutput& said) {
   int cpuWordSize = sizeof(double), ioWordSize = 0;
   float version = 0;
   const int id = ex_open(path.c_str(), EX_WRITE, &cpuWordSize, &ioWordSize, &version);
-  check(id, path, "open");
+  check(id, path, "open", said);
   return id;
 }
 
 void putVariableNames(int id, ex_entity_type type, const std::vector<std::string>& names,
-                      const std::string& path) {
+                      const std::string& path, const CapturedOutput& said) {
   if (names.empty())
     return;
-  check(ex_put_variable_param(id, type, static_cast<int>(names.size())), path, "variable count");
+  check(ex_put_variable_param(id, type, static_cast<int>(names.size())), path, "variable count",
+        said);
   auto c = cStrings(names);
   check(ex_put_variable_names(id, type, static_cast<int>(names.size()), c.data()), path,
-        "variable names");
+        "variable names", said);
 }
 
 }  // namespace
@@ -74,39 +110,45 @@ void ExodusFile::create(const std::string& path, const std::string& title, const
                         const std::vector<std::string>& nodalVariables,
                         const std::vector<std::string>& elementVariables,
                         const std::vector<std::string>& globalVariables) const {
+  const CapturedOutput said;
+  errno = 0;
   int cpuWordSize = sizeof(double), ioWordSize = sizeof(double);
   const int id = ex_create(path.c_str(), EX_CLOBBER, &cpuWordSize, &ioWordSize);
-  check(id, path, "create");
+  check(id, path, "create", said);
+  OpenFile file{id};
   check(ex_put_init(id, title.c_str(), mesh.dimension, static_cast<int64_t>(numNodes_),
                     static_cast<int64_t>(numElements_), 1, 0, 0),
-        path, "init");
+        path, "init", said);
   const double* c[3] = {nullptr, nullptr, nullptr};
   for (int d = 0; d < mesh.dimension; ++d)
     c[d] = mesh.coords[d].data();
-  check(ex_put_coord(id, c[0], c[1], c[2]), path, "coordinates");
+  check(ex_put_coord(id, c[0], c[1], c[2]), path, "coordinates", said);
   std::vector<std::string> axes = {"x", "y", "z"};
   axes.resize(mesh.dimension);
   auto axisNames = cStrings(axes);
-  check(ex_put_coord_names(id, axisNames.data()), path, "coordinate names");
+  check(ex_put_coord_names(id, axisNames.data()), path, "coordinate names", said);
   check(ex_put_block(id, EX_ELEM_BLOCK, 1, mesh.elementType.c_str(),
                      static_cast<int64_t>(numElements_), mesh.nodesPerElement, 0, 0, 0),
-        path, "element block");
+        path, "element block", said);
   check(ex_put_conn(id, EX_ELEM_BLOCK, 1, mesh.connectivity.data(), nullptr, nullptr), path,
-        "connectivity");
+        "connectivity", said);
   if (!mesh.elementIds.empty())
-    check(ex_put_id_map(id, EX_ELEM_MAP, mesh.elementIds.data()), path, "element ids");
-  putVariableNames(id, EX_NODAL, nodalVariables, path);
-  putVariableNames(id, EX_ELEM_BLOCK, elementVariables, path);
-  putVariableNames(id, EX_GLOBAL, globalVariables, path);
-  check(ex_close(id), path, "close");
+    check(ex_put_id_map(id, EX_ELEM_MAP, mesh.elementIds.data()), path, "element ids", said);
+  putVariableNames(id, EX_NODAL, nodalVariables, path, said);
+  putVariableNames(id, EX_ELEM_BLOCK, elementVariables, path, said);
+  putVariableNames(id, EX_GLOBAL, globalVariables, path, said);
+  check(ex_close(file.release()), path, "close", said);
 }
 
 bool ExodusFile::copySteps(const std::string& from, int steps) const {
+  const CapturedOutput said;
+  errno = 0;
   int cpuWordSize = sizeof(double), ioWordSize = 0;
   float version = 0;
   const int in = ex_open(from.c_str(), EX_READ, &cpuWordSize, &ioWordSize, &version);
   if (in < 0)
     return false;
+  const OpenFile input{in};
   ex_init_params p{};
   int nodal = 0, element = 0, global = 0;
   const bool fits =
@@ -120,7 +162,8 @@ bool ExodusFile::copySteps(const std::string& from, int steps) const {
       static_cast<std::size_t>(global) == numGlobal_ && ex_inquire_int(in, EX_INQ_TIME) >= steps;
   bool copied = fits;
   if (fits) {
-    const int out = openForAppend(path_);
+    const int out = openForAppend(path_, said);
+    OpenFile output{out};
     std::vector<double> values(std::max({numNodes_, numElements_, numGlobal_, std::size_t(1)}));
     const auto copy = [&](int step, ex_entity_type type, std::size_t variables, std::size_t n) {
       for (std::size_t v = 0; v < variables && copied; ++v)
@@ -140,9 +183,8 @@ bool ExodusFile::copySteps(const std::string& from, int steps) const {
                  ex_put_var(out, step, EX_GLOBAL, 1, 0, static_cast<int64_t>(numGlobal_),
                             values.data()) >= 0;
     }
-    check(ex_close(out), path_, "close");
+    check(ex_close(output.release()), path_, "close", said);
   }
-  ex_close(in);
   return copied;
 }
 
@@ -151,21 +193,24 @@ void ExodusFile::append(double time, const std::vector<std::vector<double>>& nod
                         const std::vector<double>& global) {
   if (nodal.size() != numNodal_ || element.size() != numElement_ || global.size() != numGlobal_)
     throw std::logic_error("Exodus output: wrong number of variables for " + path_);
-  const int id = openForAppend(path_);
+  const CapturedOutput said;
+  errno = 0;
+  const int id = openForAppend(path_, said);
+  OpenFile file{id};
   const int step = steps_ + 1;
-  check(ex_put_time(id, step, &time), path_, "time");
+  check(ex_put_time(id, step, &time), path_, "time", said);
   for (std::size_t v = 0; v < numNodal_; ++v)
     check(ex_put_var(id, step, EX_NODAL, static_cast<int>(v + 1), 1,
                      static_cast<int64_t>(numNodes_), nodal[v].data()),
-          path_, "nodal variable");
+          path_, "nodal variable", said);
   for (std::size_t v = 0; v < numElement_; ++v)
     check(ex_put_var(id, step, EX_ELEM_BLOCK, static_cast<int>(v + 1), 1,
                      static_cast<int64_t>(numElements_), element[v].data()),
-          path_, "element variable");
+          path_, "element variable", said);
   if (numGlobal_)
     check(ex_put_var(id, step, EX_GLOBAL, 1, 0, static_cast<int64_t>(numGlobal_), global.data()),
-          path_, "global variables");
-  check(ex_close(id), path_, "close");
+          path_, "global variables", said);
+  check(ex_close(file.release()), path_, "close", said);
   steps_ = step;
 }
 

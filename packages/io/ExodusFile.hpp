@@ -23,7 +23,7 @@ struct ExodusMesh {
 
 class ExodusFile {
  public:
-  // Creates (overwrites) the file.  Throws std::runtime_error naming the file on failure.
+  // Creates (overwrites) the file.  Throws FileError naming the file and the reason.
   // With keepSteps > 0 (a restart) the file is continued instead: an existing file of this
   // mesh and these variables keeps its first keepSteps time steps (later ones, written
   // after the checkpoint, are dropped by a copy); if there is none, or it does not fit, a
@@ -33,7 +33,7 @@ class ExodusFile {
              const std::vector<std::string>& elementVariables,
              const std::vector<std::string>& globalVariables, int keepSteps = 0);
 
-  // Appends time step `time`; values[variable][node or element].
+  // Appends time step `time`; values[variable][node or element].  FileError when it cannot.
   void append(double time, const std::vector<std::vector<double>>& nodal,
               const std::vector<std::vector<double>>& element, const std::vector<double>& global);
 

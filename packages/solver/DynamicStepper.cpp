@@ -230,11 +230,11 @@ bool DynamicStepper<Dim>::eliminate(GridSystem<Dim>& system, const CrsMatrix& J,
                                     NewtonReport& report) const {
   IMPM_TIMER("explicit update");
   Vector r(system.unknownMap()), step(system.unknownMap());
-  system.evaluate(du, &r, nullptr);
   report = NewtonReport();
-  report.residualNorms = {r.norm2()};
-  r.scale(-1.0);
   try {
+    system.evaluate(du, &r, nullptr);
+    report.residualNorms = {r.norm2()};
+    r.scale(-1.0);
     solveDiagonalWithExtras(J, system.nodalMask(), system.extraDofs(), r, step);
   } catch (const NumericalError& e) {
     report.failure = e.what();

@@ -5,6 +5,7 @@
 #include "assembly/Graph.hpp"
 #include "basis/CornerWeights.hpp"
 #include "core/Collective.hpp"
+#include "core/Diagnostics.hpp"
 #include "core/Errors.hpp"
 #include "core/Timers.hpp"
 #include "solver/RigidBodyModes.hpp"
@@ -189,16 +190,11 @@ void GridSystem<Dim>::checkEveryActiveNodeIsIntegrated() const {
       const GO dof = map.getGlobalElement(static_cast<LO>(k));
       if (values[k] > 0.0 || dofs_.isExtraDof(dof))
         continue;
-      int idx[Dim];
-      grid_.nodeIndex(dof / Dim, idx);
-      std::ostringstream msg;
-      msg << "grid node " << dof / Dim << " at x = " << grid_.nodeCoord(0, idx[0]);
-      if (Dim > 1)
-        msg << ", y = " << grid_.nodeCoord(1, idx[1]);
-      msg << " is reached by a boundary condition but by no integration point, so its row of "
-             "the system is empty (classic MPM does this when a body's end lies in a cell "
-             "that holds no particle centre); use gimp or cpdi, or more particles per cell";
-      throw NumericalError(msg.str());
+      throw NumericalError(
+          nodeLabel(dof / Dim) +
+          " is reached by a boundary condition but by no integration point, so its row of the "
+          "system is empty (classic MPM does this when a body's end lies in a cell that holds "
+          "no particle centre); use gimp or cpdi, or more particles per cell");
     }
   });
 }
@@ -246,8 +242,79 @@ void GridSystem<Dim>::updateStress(const Vector& x) {
       materials_[m]->firstPiola(evaluationOf(particles_, materials_, k, work_.F, trial_.of(k)),
                                 work_.P, work_.A);
     }
+    requireFiniteStress();
   });
   stressRelativeToStepStart<Dim>(kinematics_, particles_.F, work_.P, work_.A, work_.Pn, work_.An);
+}
+
+template <int Dim>
+void GridSystem<Dim>::requireFiniteStress() const {
+  const long stress = firstNonFiniteRow(work_.P, particles_.size());
+  const long tangent = firstNonFiniteRow(work_.A, particles_.size());
+  if (stress < 0 && tangent < 0)
+    return;
+  const long p = stress >= 0 ? stress : tangent;
+  auto material = Kokkos::create_mirror_view_and_copy(
+      Kokkos::HostSpace(), Kokkos::subview(particles_.material, Kokkos::make_pair(p, p + 1)));
+  auto F = Kokkos::create_mirror_view_and_copy(
+      Kokkos::HostSpace(),
+      Kokkos::subview(work_.F, Kokkos::make_pair(p, p + 1), Kokkos::ALL(), Kokkos::ALL()));
+  std::ostringstream msg;
+  msg << "the " << (stress >= 0 ? "stress" : "tangent") << " of " << particleLabel(particles_, p)
+      << " (material '" << materials_[material(0)]->name() << "') is not finite at F = (";
+  for (int a = 0; a < Dim; ++a)
+    for (int b = 0; b < Dim; ++b)
+      msg << (a + b ? ", " : "") << F(0, a, b);
+  throw NumericalError(msg.str() + ")");
+}
+
+template <int Dim>
+std::string GridSystem<Dim>::nodeLabel(GlobalId node) const {
+  int idx[Dim];
+  grid_.nodeIndex(node, idx);
+  std::ostringstream s;
+  s << "grid node " << node << " at x = (";
+  for (int d = 0; d < Dim; ++d)
+    s << (d ? ", " : "") << grid_.nodeCoord(d, idx[d]);
+  s << ")";
+  return s.str();
+}
+
+template <int Dim>
+std::string GridSystem<Dim>::unknownLabel(GO dof) const {
+  if (dofs_.isExtraDof(dof))
+    return "extra unknown " + std::to_string(dof) + " (a boundary force)";
+  if (Dim == 1)
+    return nodeLabel(dof);
+  return nodeLabel(dof / Dim) + ", component " + "xyz"[dof % Dim];
+}
+
+template <int Dim>
+void GridSystem<Dim>::requireFinite(const Vector& v, const std::string& what) const {
+  collectively(*v.getMap()->getComm(), [&] {
+    const long k =
+        firstNonFiniteRow(v.getLocalViewDevice(Tpetra::Access::ReadOnly), v.getLocalLength());
+    if (k >= 0)
+      throw NumericalError(what + " is not finite at " +
+                           unknownLabel(v.getMap()->getGlobalElement(static_cast<LO>(k))));
+  });
+}
+
+template <int Dim>
+void GridSystem<Dim>::requireFinite(const CrsMatrix& J) const {
+  collectively(*J.getRowMap()->getComm(), [&] {
+    const auto K = J.getLocalMatrixDevice();
+    const long k = firstNonFiniteRow(K.values, K.values.extent(0));
+    if (k < 0)
+      return;
+    auto rowMap = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), K.graph.row_map);
+    const LO row = static_cast<LO>(std::upper_bound(rowMap.data(), rowMap.data() + rowMap.extent(0),
+                                                    static_cast<std::size_t>(k)) -
+                                   rowMap.data()) -
+                   1;
+    throw NumericalError("the Jacobian is not finite in the row of " +
+                         unknownLabel(J.getRowMap()->getGlobalElement(row)));
+  });
 }
 
 template <int Dim>
@@ -295,6 +362,8 @@ void GridSystem<Dim>::assembleResidual(const Vector& x, Vector& residual) const 
 
 template <int Dim>
 void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jacobian) {
+  // NaN or inf stops the step here, named, before a Krylov solver or an output meets it.
+  requireFinite(x, "the Newton iterate (the last linear solve's result)");
   if (!frozen_) {
     updateStress(x);
   } else if (!frozenReady_) {
@@ -304,6 +373,7 @@ void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jac
   if (residual) {
     assembleResidual(x, *residual);
     applyConstraints(x, residual, nullptr);
+    requireFinite(*residual, "the residual");
   }
   if (jacobian) {
     IMPM_TIMER("Jacobian");
@@ -323,6 +393,7 @@ void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jac
       contributions_[c]->addJacobian(context(static_cast<int>(c)), constHost(xHost), J);
     J.endAssembly();
     applyConstraints(x, nullptr, &J);
+    requireFinite(J);
   }
 }
 

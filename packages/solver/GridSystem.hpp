@@ -10,6 +10,7 @@
 // here until commit().
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "assembly/Kinematics.hpp"
@@ -111,6 +112,17 @@ class GridSystem : public ResidualModel {
   // Rows of prescribed unknowns: residual scale (x_i - value), Jacobian row scale e_i.
   void applyConstraints(const Vector& x, Vector* residual, CrsMatrix* jacobian) const;
   void checkEveryActiveNodeIsIntegrated() const;
+  // NumericalError naming the first particle whose trial stress or tangent is NaN or
+  // infinite (local).
+  void requireFiniteStress() const;
+  // NumericalError on every rank naming the first unknown at which the vector, or a row in
+  // which the matrix, holds NaN or inf.  Collective.
+  void requireFinite(const Vector& v, const std::string& what) const;
+  void requireFinite(const CrsMatrix& J) const;
+  // "grid node 12 at x = (0.5, 0.25)"; with ", component y" for an unknown, or the extra
+  // unknown it is.
+  std::string nodeLabel(GlobalId node) const;
+  std::string unknownLabel(GO dof) const;
 
   Teuchos::RCP<CrsMatrix> explicitJacobian_;  // the explicit steps' matrix, refilled
   const GridGeometry<Dim> grid_;

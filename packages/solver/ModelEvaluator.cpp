@@ -3,6 +3,8 @@
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Thyra_VectorStdOps.hpp>
 
+#include "core/StopRequest.hpp"
+
 namespace impm {
 
 using MEB = Thyra::ModelEvaluatorBase;
@@ -59,6 +61,9 @@ Teuchos::RCP<const MpmModelEvaluator::LOWSFactory> MpmModelEvaluator::get_W_fact
 
 void MpmModelEvaluator::evalModelImpl(const MEB::InArgs<double>& in,
                                       const MEB::OutArgs<double>& out) const {
+  // Every evaluation is collective, so every rank agrees here to abandon the step.
+  if (stopAgreed(*model_->unknownMap()->getComm()))
+    throw StopRequest();
   auto x = Extract::getConstTpetraVector(in.get_x());
   Teuchos::RCP<Vector> f;
   if (out.get_f() != Teuchos::null)

@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "core/Errors.hpp"
+#include "core/StopRequest.hpp"
 
 #include "core/Parameters.hpp"
 #include "solver/LinearSolver.hpp"
@@ -223,11 +224,25 @@ NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vecto
   std::ostream* log = (log_ && comm_->getRank() == 0) ? log_ : nullptr;
   auto me = Teuchos::rcp(new MpmModelEvaluator(model, lows_));
   auto guess = Thyra::createVector<double, LO, GO, Node>(Teuchos::rcpFromRef(x), me->get_x_space());
-  if (!reuse_.is_null())
-    reuse_->setNullSpace([model] { return model->nearNullSpace(); });
+  // The reuse factory asks for the near-null space only while this model is being solved;
+  // it must not keep the model alive after this solve, however it ends.
+  struct NullSpaceLease {
+    ReusingPreconditionerFactory* reuse;
+    ~NullSpaceLease() {
+      if (reuse)
+        reuse->setNullSpace(nullptr);
+    }
+  } lease{reuse_.get()};
+  if (lease.reuse)
+    lease.reuse->setNullSpace([model] { return model->nearNullSpace(); });
   auto group = Teuchos::rcp(new NOX::Thyra::Group(NOX::Thyra::Vector(guess), me, me->create_W_op(),
                                                   lows_, prec_, reuse_, Teuchos::null));
-  group->computeF();
+  try {
+    group->computeF();
+  } catch (const NumericalError& e) {  // not finite, or a law outside its domain, at the guess
+    report.failure = e.what();
+    return report;
+  }
   const double initial = group->getNormF();
   report.residualNorms.push_back(initial);
   if (log)
@@ -260,6 +275,8 @@ NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vecto
   StatusType status = Unconverged;
   try {
     status = solver->solve();
+  } catch (const StopRequest&) {
+    throw;  // not a failure of the step: the run stops (core/StopRequest.hpp)
   } catch (const NumericalError& e) {
     report.failure = e.what();
   } catch (const std::exception& e) {
@@ -267,8 +284,6 @@ NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vecto
     report.failure = "linear solver failure: " + trilinosMessage(e.what());
   }
 
-  if (!reuse_.is_null())
-    reuse_->setNullSpace(nullptr);  // do not keep the model alive
   const auto& solution = dynamic_cast<const NOX::Thyra::Vector&>(solver->getSolutionGroup().getX());
   auto tpetra = Thyra::TpetraOperatorVectorExtraction<double, LO, GO, Node>::getConstTpetraVector(
       solution.getThyraRCPVector());

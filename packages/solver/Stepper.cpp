@@ -1,10 +1,13 @@
 #include "solver/Stepper.hpp"
 
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
 
 #include "assembly/Energy.hpp"
+#include "core/Collective.hpp"
+#include "core/Diagnostics.hpp"
 #include "core/Errors.hpp"
 #include "core/Migration.hpp"
 #include "core/Timers.hpp"
@@ -65,19 +68,46 @@ void Stepper<Dim>::gridToParticles(GridSystem<Dim>& system, const Vector& du, do
 }
 
 template <int Dim>
+void Stepper<Dim>::requireFiniteParticles(const StepRecord& record) const {
+  const auto& ps = setup_.particles;
+  std::ostringstream when;
+  when << "step " << state_.step + 1 << " (t = " << record.time << ")";
+  collectively(*setup_.ownership.comm(), [&] {
+    const std::pair<const char*, long> fields[] = {
+        {"position", firstNonFiniteRow(ps.x, ps.size())},
+        {"velocity", firstNonFiniteRow(ps.v, ps.size())},
+        {"deformation gradient", firstNonFiniteRow(ps.F, ps.size())},
+        {"stress", firstNonFiniteRow(ps.stress, ps.size())}};
+    for (const auto& [name, p] : fields)
+      if (p >= 0)
+        throw NumericalError(when.str() + ": " + particleLabel(ps, p) + " has a " + name +
+                             " that is not finite after the particle update");
+  });
+  const std::pair<const char*, double> energies[] = {{"strain energy", record.strainEnergy},
+                                                     {"kinetic energy", record.kineticEnergy},
+                                                     {"dissipated energy", record.dissipation},
+                                                     {"external work", record.externalWork}};
+  for (const auto& [name, value] : energies)
+    if (!std::isfinite(value))
+      throw NumericalError(when.str() + ": the " + name + " is not finite");
+}
+
+template <int Dim>
 void Stepper<Dim>::accept(StepRecord& record, const StepGrid<Dim>& grid,
                           const StepCallback<Dim>& onStep) {
   const Comm& comm = *setup_.ownership.comm();
-  record.step = ++state_.step;
-  record.attempts = state_.attempts + 1;
   record.strainEnergy = strainEnergy<Dim>(setup_.particles, setup_.materials, comm);
   record.dissipation = dissipatedEnergy<Dim>(setup_.particles, setup_.materials, comm);
   record.externalWork = state_.bodyWork + contributionWork<Dim>(setup_.contributions);
+  requireFiniteParticles(record);  // nothing that is not finite reaches the outputs
+  record.step = ++state_.step;
+  record.attempts = state_.attempts + 1;
   record.supportForces = supportForces_;
   state_.attempts = 0;
   state_.size = std::min(2 * size(), nominal_);  // grows back after a cutback
   if (state_.size >= nominal_)
     state_.size = 0.0;
+  accepted_ = state_;
   onStep(record, grid);
   if (setup_.kinematics == Kinematics::updatedLagrangian) {
     IMPM_TIMER("migration");  // particles live on the rank that owns their cell

@@ -29,9 +29,11 @@ class Stepper {
   // accepted one.  Throws NumericalError when a step fails at the smallest size.
   virtual void run(const StepCallback<Dim>& onStep) = 0;
 
-  // The state carried between steps (checkpoints), and its restoration before run().
-  const StepperState& state() const { return state_; }
-  void restore(const StepperState& state) { state_ = state; }
+  // The state carried between steps as it was when the last step was accepted (what a
+  // checkpoint saves, also when the run stops in the middle of the next step: nothing of a
+  // step is committed before it is accepted), and its restoration before run().
+  const StepperState& state() const { return accepted_; }
+  void restore(const StepperState& state) { state_ = accepted_ = state; }
 
  protected:
   // The size of the next step (after cutbacks and regrowth).
@@ -55,13 +57,18 @@ class Stepper {
   // converged increment are kept for the step's record.
   void gridToParticles(GridSystem<Dim>& system, const Vector& du, double workScale);
 
+  // NumericalError (on every rank) when a particle's position, velocity, F or stress, or an
+  // energy of the record, is NaN or infinite after the update.  Collective.
+  void requireFiniteParticles(const StepRecord& record) const;
+
   // 4. The step is accepted: fills the record's step, attempts and energies (the kinetic
   // energy is the caller's), regrows the step size, reports, migrates.
   void accept(StepRecord& record, const StepGrid<Dim>& grid, const StepCallback<Dim>& onStep);
 
   StepperSetup<Dim> setup_;
-  StepperState state_;
-  std::ostream* log_;  // rank 0: the progress log; elsewhere null
+  StepperState state_;     // as the step under way changes it
+  StepperState accepted_;  // at the last accepted step
+  std::ostream* log_;      // rank 0: the progress log; elsewhere null
 
  private:
   double nominal_, minimum_;

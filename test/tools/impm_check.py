@@ -328,6 +328,33 @@ def ranks(args):
     sys.exit(1 if failures else 0)
 
 
+def non_finite_history(rows):
+    """Values that are not finite in the history, but for columns that are NaN in every row
+    (a reaction the deck has no support for)."""
+    problems = []
+    for c in rows[0].keys() if rows else []:
+        values = [float(r[c]) for r in rows]
+        if all(math.isnan(v) for v in values):
+            continue
+        bad = [k for k, v in enumerate(values) if not math.isfinite(v)]
+        if bad:
+            problems.append("history column %s is not finite in row %d" % (c, bad[0]))
+    return problems
+
+
+def non_finite_exodus(path):
+    """Time-step variables (vals_*) of an Exodus file that hold NaN or inf (python3-netcdf4)."""
+    try:
+        import netCDF4
+        import numpy
+    except ImportError:
+        return []
+    with netCDF4.Dataset(path) as d:
+        return ["%s: %s is not finite" % (os.path.basename(path), name)
+                for name, var in d.variables.items()
+                if name.startswith("vals_") and not numpy.all(numpy.isfinite(var[:]))]
+
+
 def fails(args):
     out = os.path.join(tempfile.mkdtemp(prefix="impm-bad-", dir="."), "out")
     r = run_impm(args, args.deck, out, args.set, args.np)
@@ -342,11 +369,14 @@ def fails(args):
         rows = read_csv(history) if os.path.exists(history) else []
         if len(rows) < 2:
             problems.append("the history holds %d rows, expected the steps done" % len(rows))
+        problems += non_finite_history(rows)
         for f in sorted(os.listdir(out)) if os.path.exists(out) else []:
             if f.endswith(".exo"):
                 if subprocess.run(["ncdump", "-h", os.path.join(out, f)],
                                   capture_output=True).returncode != 0:
                     problems.append("%s is not a readable netCDF/Exodus file" % f)
+                else:
+                    problems += non_finite_exodus(os.path.join(out, f))
         print("outputs kept: %d history rows" % len(rows))
     elif os.path.exists(out) and os.listdir(out):
         problems.append("output files were written: %s" % ", ".join(sorted(os.listdir(out))))

@@ -14,6 +14,13 @@ run's final state.
           restarts from the newest complete checkpoint.  The last run finishes; its particle and history CSV
           must be identical to the uninterrupted run's, and the Exodus files must hold the
           same time steps.
+  stop    starts the deck without periodic checkpoints and sends it SIGTERM (or --signal INT
+          or USR1; to mpirun on several ranks, which passes it on to every rank, SIGTERM and
+          SIGINT about a second later) at a random moment after its first step.  The run must
+          exit with status 5 (mpirun after SIGTERM or SIGINT: not 0), print one line that
+          names the checkpoint it wrote and the command that continues from it, and leave
+          Exodus files that netCDF reads; that command must then end the run with the particle
+          and history CSV identical to the uninterrupted run's, and the same Exodus time steps.
 
   bad     checkpoints impm must refuse before writing anything, each with one line that
           names the file and the reason and exit status 1: a missing file, a truncated one,
@@ -240,6 +247,80 @@ def crash(args):
     sys.exit(1 if failures else 0)
 
 
+def history_rows(out, deck):
+    try:
+        with open(os.path.join(out, stem(deck) + "_history.csv")) as f:
+            return sum(1 for _ in f) - 1
+    except OSError:
+        return 0
+
+
+def stop(args):
+    rng = random.Random(args.seed)
+    work = tempfile.mkdtemp(prefix="impm-stop-", dir=".")
+    straight, stopped = os.path.join(work, "straight"), os.path.join(work, "stopped")
+    sets = ["Solver/Print Iterations=false"]
+    began = time.time()
+    run(args, args.np, straight, sets)
+    wall = time.time() - began
+    print("uninterrupted run: %.2f s" % wall)
+    number = {"TERM": signal.SIGTERM, "INT": signal.SIGINT, "USR1": signal.SIGUSR1}[args.signal]
+    late = args.np > 1 and args.signal != "USR1"
+    # mpirun passes SIGTERM and SIGINT on about a second after it got them.
+    delay = max(0.0, 0.6 * wall - (1.2 if late else 0.0))
+    failures = []
+    for attempt in range(4):
+        shutil.rmtree(stopped, ignore_errors=True)
+        cmd = command(args, args.np, stopped, args.deck, sets)
+        p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                             start_new_session=True)
+        while p.poll() is None and history_rows(stopped, args.deck) < 2:
+            time.sleep(0.005)  # the initial state and the first step are written
+        time.sleep(rng.uniform(0.0, delay) / 2 ** attempt)
+        if p.poll() is None:
+            os.kill(p.pid, number)
+        out, err = p.communicate(timeout=600)
+        if "impm: stopped by" in err or "impm: wrote" not in out:
+            break
+        print("the run ended before the signal reached it; again, earlier")
+    else:
+        sys.exit("FAIL: every run ended before its signal reached it")
+    lines = [l for l in err.splitlines() if l.startswith("impm:")]
+    print("exit status %d; %s" % (p.returncode, lines[-1] if lines else err.strip()[-500:]))
+    expected = None if late else 5
+    if (expected and p.returncode != expected) or p.returncode == 0:
+        failures.append("exit status %d, not %s" % (p.returncode, expected or "non-zero"))
+    received = "TERM" if late else args.signal  # mpirun ends a job with SIGTERM
+    stop_lines = [l for l in lines if l.startswith("impm: stopped by SIG" + received)]
+    if len(stop_lines) != 1 or "; continue with: " not in stop_lines[0]:
+        sys.exit("FAIL: no single stop line:\n" + out[-2000:] + err)
+    checkpoint = stop_lines[0].split(": checkpoint ", 1)[1].split(";", 1)[0]
+    continued = shlex.split(stop_lines[0].split("; continue with: ", 1)[1])
+    if not os.path.isfile(checkpoint):
+        failures.append("the checkpoint %s is not there" % checkpoint)
+    for path in sorted(glob.glob(os.path.join(stopped, "*.exo"))):
+        if subprocess.run(["ncdump", "-h", path], capture_output=True).returncode != 0:
+            failures.append("%s does not open" % os.path.basename(path))
+    launcher = shlex.split(args.mpiexec) + [str(args.np)] if args.np > 1 else []
+    r = subprocess.run(launcher + continued, capture_output=True, text=True)
+    if r.returncode != 0:
+        sys.exit("FAIL: the continued run failed: %s\n%s%s" % (" ".join(continued),
+                                                               r.stdout[-2000:], r.stderr))
+    for kind in ("particles", "history"):
+        same = text(straight, args.deck, kind) == text(stopped, args.deck, kind)
+        print("%s CSV: %s" % (kind, "identical" if same else "DIFFERENT"))
+        if not same:
+            failures.append("the %s CSV differs from the uninterrupted run's" % kind)
+    a, b = exodus_times(straight, args.deck), exodus_times(stopped, args.deck)
+    print("Exodus files: %s" % ("the same time steps" if a == b else "DIFFERENT time steps"))
+    if a != b:
+        failures.append("the Exodus files hold other time steps: %s against %s" % (b, a))
+    shutil.rmtree(work)
+    for f in failures:
+        print("FAIL:", f)
+    sys.exit(1 if failures else 0)
+
+
 def bad(args):
     import netCDF4  # Debian's python3-netCDF4: to edit checkpoints as a corruption would
     import numpy
@@ -329,6 +410,12 @@ def main():
     c.add_argument("--in-write", action="store_true")
     c.add_argument("--seed", type=int, default=1)
     c.add_argument("--set", action="append", default=[])
+    t = sub.add_parser("stop")
+    t.add_argument("--deck", required=True)
+    t.add_argument("--np", type=int, default=1)
+    t.add_argument("--signal", choices=["TERM", "INT", "USR1"], default="TERM")
+    t.add_argument("--seed", type=int, default=1)
+    t.add_argument("--set", action="append", default=[])
     b = sub.add_parser("bad")
     b.add_argument("--deck", required=True)
     b.add_argument("--every", type=int, default=2)
@@ -340,7 +427,7 @@ def main():
     args = p.parse_args()
     if args.check == "split" and not (args.from_step or args.stop):
         sys.exit("split needs --from-step or --stop")
-    {"split": split, "crash": crash, "bad": bad}[args.check](args)
+    {"split": split, "crash": crash, "stop": stop, "bad": bad}[args.check](args)
 
 
 if __name__ == "__main__":
