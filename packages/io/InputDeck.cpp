@@ -1,9 +1,11 @@
 #include "io/InputDeck.hpp"
 
+#include <Teuchos_StringInputSource.hpp>
 #include <Teuchos_XMLParameterListHelpers.hpp>
 
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
@@ -11,6 +13,64 @@
 namespace impm {
 
 namespace {
+
+// The number `text` in full, or false (Teuchos' XML reader takes the longest number at the
+// start: "0.005xyz" would be 0.005, "1e" 1).
+bool readsAs(const std::string& type, const std::string& text) {
+  const auto first = text.find_first_not_of(" \t\n");
+  const auto last = text.find_last_not_of(" \t\n");
+  if (first == std::string::npos)
+    return false;
+  const std::string t = text.substr(first, last - first + 1);
+  std::size_t used = 0;
+  try {
+    if (type == "int")
+      std::stoi(t, &used);
+    else
+      std::stod(t, &used);
+  } catch (const std::exception&) {
+    return false;
+  }
+  return used == t.size();
+}
+
+// Every int and double of the deck, and every entry of their arrays, must be a number from its
+// first character to its last.
+void checkNumbers(const Teuchos::XMLObject& list, const std::string& path) {
+  for (int k = 0; k < list.numChildren(); ++k) {
+    const Teuchos::XMLObject& child = list.getChild(k);
+    const std::string name = child.hasAttribute("name") ? child.getAttribute("name") : "";
+    const std::string here = path.empty() ? name : path + "/" + name;
+    if (child.getTag() == "ParameterList") {
+      checkNumbers(child, here);
+      continue;
+    }
+    if (child.getTag() != "Parameter" || !child.hasAttribute("type") ||
+        !child.hasAttribute("value"))
+      continue;
+    const std::string type = child.getAttribute("type"), value = child.getAttribute("value");
+    const bool array = type == "Array(int)" || type == "Array(double)";
+    if (type != "int" && type != "double" && !array)
+      continue;
+    const std::string element = array ? type.substr(6, type.size() - 7) : type;
+    std::vector<std::string> items;
+    if (array) {
+      const auto open = value.find('{'), close = value.rfind('}');
+      if (open == std::string::npos || close == std::string::npos || close < open)
+        throw InputError(here, "cannot read '" + value + "' as " + type);
+      std::stringstream entries(value.substr(open + 1, close - open - 1));
+      for (std::string item; std::getline(entries, item, ',');)
+        items.push_back(item);
+      if (items.size() == 1 && items[0].find_first_not_of(" \t\n") == std::string::npos)
+        items.clear();  // {}
+    } else {
+      items.push_back(value);
+    }
+    for (const auto& item : items)
+      if (!readsAs(element, item))
+        throw InputError(here, "cannot read '" + value + "' as " + type);
+  }
+}
 
 Teuchos::ParameterList readXml(const std::string& file) {
   std::ifstream in(file);
@@ -21,11 +81,14 @@ Teuchos::ParameterList readXml(const std::string& file) {
   const std::string xml = text.str();
   if (xml.find_first_not_of(" \t\r\n") == std::string::npos)
     throw InputError("", "the deck file is empty");
+  Teuchos::ParameterList deck;
   try {
-    return *Teuchos::getParametersFromXmlString(xml);
+    deck = *Teuchos::getParametersFromXmlString(xml);
   } catch (const std::exception& e) {
     throw InputError("", "malformed XML deck: " + trilinosMessage(e.what()));
   }
+  checkNumbers(Teuchos::StringInputSource(xml).getObject(), "");
+  return deck;
 }
 
 void applyOverride(Teuchos::ParameterList& deck, const Override& o,
