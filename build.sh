@@ -7,6 +7,9 @@
 #   ./build.sh test     build, run the whole ctest suite (unit, verification, MPI)
 #   ./build.sh build    install dependencies and build only
 #   ./build.sh benchmark  build, run the benchmarks and update doc/performance.md
+#   ./build.sh sanitize   build with AddressSanitizer and UndefinedBehaviorSanitizer into its own
+#                         directory (IMPM_SANITIZE_BUILD_DIR, default ./build-sanitize), run the
+#                         unit tests and a deck of every problem family on 1 and 2 ranks
 #
 # Environment: IMPM_BUILD_DIR (default ./build), IMPM_JOBS (default: number of cores).
 set -euo pipefail
@@ -74,6 +77,22 @@ case "$cmd" in
     build
     ctest --test-dir "$build_dir" --output-on-failure -j "$jobs" --timeout 900
     ;;
+  sanitize)
+    install_missing "${build_packages[@]}"
+    sanitize_dir="${IMPM_SANITIZE_BUILD_DIR:-$here/build-sanitize}"
+    cmake -S "$here" -B "$sanitize_dir" -DCMAKE_BUILD_TYPE=Release \
+      -DIMPM_SANITIZE=address,undefined -DCMAKE_CXX_COMPILER_LAUNCHER=ccache >/dev/null
+    # The driver and the unit tests only: the tools and benchmarks are not run here.
+    cmake --build "$sanitize_dir" -j "$jobs" --target impm unit_core unit_basis unit_bc \
+      unit_material unit_assembly unit_solver unit_io unit_app
+    # The slow unwinder: the fast one loses its way in libraries built without frame pointers,
+    # and leaks of Open MPI then look like leaks of other libraries.
+    export ASAN_OPTIONS="detect_leaks=1:fast_unwind_on_malloc=0:check_initialization_order=1"
+    export LSAN_OPTIONS="suppressions=$here/test/sanitize/lsan.supp:print_suppressions=0"
+    export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+    ctest --test-dir "$sanitize_dir" --output-on-failure -j "$jobs" --timeout 900 \
+      -L "unit|sanitize"
+    ;;
   benchmark)
     install_missing "${build_packages[@]}"
     build
@@ -83,7 +102,7 @@ case "$cmd" in
     done
     ;;
   *)
-    echo "usage: $0 [demo|test|build|benchmark]" >&2
+    echo "usage: $0 [demo|test|build|benchmark|sanitize]" >&2
     exit 2
     ;;
 esac
