@@ -13,6 +13,7 @@
 
 #include <cstdlib>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -227,9 +228,15 @@ int main(int argc, char** argv) {
                 << "; continue with: " << continueCommand(keptCount, keptArgs, e.checkpoint())
                 << "\n";
     return impm::kStoppedExit;
-  } catch (const std::exception& e) {
+  } catch (const std::bad_alloc&) {
     if (root)
-      std::cerr << "impm: error: " << e.what() << "\n";
+      std::cerr << "impm: error: " << args.deck
+                << ": not enough memory for this problem (its grid, Grid/Cells, and the particles "
+                   "its bodies make)\n";
+    return 1;
+  } catch (const std::exception& e) {  // not foreseen: still one line, naming the deck
+    if (root)
+      std::cerr << "impm: error: " << args.deck << ": " << impm::trilinosMessage(e.what()) << "\n";
     return 3;
   }
 }

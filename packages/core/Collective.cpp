@@ -3,6 +3,7 @@
 #include <Teuchos_CommHelpers.hpp>
 
 #include <algorithm>
+#include <new>
 
 #include "core/Errors.hpp"
 
@@ -10,7 +11,7 @@ namespace impm {
 
 namespace {
 
-enum Kind { kNone = 0, kInput = 1, kNumerical = 2, kOther = 3, kFile = 4 };
+enum Kind { kNone = 0, kInput = 1, kNumerical = 2, kOther = 3, kFile = 4, kMemory = 5 };
 
 void broadcastString(const Comm& comm, int root, std::string& s) {
   int n = static_cast<int>(s.size());
@@ -33,6 +34,8 @@ void collectively(const Comm& comm, const std::function<void()>& phase) {
     kind = kFile, path = e.file(), message = e.what();
   } catch (const NumericalError& e) {
     kind = kNumerical, message = e.what();
+  } catch (const std::bad_alloc& e) {
+    kind = kMemory, message = e.what();
   } catch (const std::exception& e) {
     kind = kOther, message = e.what();
   }
@@ -56,6 +59,8 @@ void collectively(const Comm& comm, const std::function<void()>& phase) {
     throw FileError(path, message);
   if (kind == kNumerical)
     throw NumericalError(message);
+  if (kind == kMemory)
+    throw std::bad_alloc();
   throw std::runtime_error(message);
 }
 

@@ -4,10 +4,12 @@
 #include <Teuchos_StrUtils.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <climits>
 #include <cmath>
 #include <iomanip>
 #include <ostream>
+#include <regex>
 #include <sstream>
 
 #include "core/Errors.hpp"
@@ -531,6 +533,83 @@ bool insideOpaqueList(const ParameterList& valid, const ParameterList& user,
                           path.substr(slash + 1));
 }
 
+namespace {
+
+// The text without the spaces around it.
+std::string trimmed(const std::string& text) {
+  const auto first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string::npos)
+    return "";
+  return text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1);
+}
+
+bool decimal(const std::string& t) {
+  static const std::regex pattern(R"([+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?)");
+  return std::regex_match(t, pattern);
+}
+
+// The entries of "{a, b, ...}", or false when the braces are missing.
+bool arrayEntries(const std::string& text, std::vector<std::string>& entries) {
+  const std::string t = trimmed(text);
+  if (t.size() < 2 || t.front() != '{' || t.back() != '}')
+    return false;
+  entries.clear();
+  const std::string inside = t.substr(1, t.size() - 2);
+  if (trimmed(inside).empty())
+    return true;
+  std::stringstream items(inside);
+  for (std::string item; std::getline(items, item, ',');)
+    entries.push_back(item);
+  if (inside.back() == ',')
+    entries.push_back("");  // "{1,}" has an empty last entry
+  return true;
+}
+
+}  // namespace
+
+bool readNumber(const std::string& text, double& value) {
+  const std::string t = trimmed(text);
+  if (!decimal(t))
+    return false;
+  value = std::strtod(t.c_str(), nullptr);
+  return std::isfinite(value);  // 1e999 overflows
+}
+
+bool readInteger(const std::string& text, int& value) {
+  const std::string t = trimmed(text);
+  static const std::regex pattern(R"([+-]?\d+)");
+  if (!std::regex_match(t, pattern))
+    return false;
+  errno = 0;
+  const long v = std::strtol(t.c_str(), nullptr, 10);
+  if (errno == ERANGE || v < INT_MIN || v > INT_MAX)
+    return false;
+  value = static_cast<int>(v);
+  return true;
+}
+
+bool readNumbers(const std::string& text, std::vector<double>& values) {
+  std::vector<std::string> entries;
+  if (!arrayEntries(text, entries))
+    return false;
+  values.resize(entries.size());
+  for (std::size_t k = 0; k < entries.size(); ++k)
+    if (!readNumber(entries[k], values[k]))
+      return false;
+  return true;
+}
+
+bool readIntegers(const std::string& text, std::vector<int>& values) {
+  std::vector<std::string> entries;
+  if (!arrayEntries(text, entries))
+    return false;
+  values.resize(entries.size());
+  for (std::size_t k = 0; k < entries.size(); ++k)
+    if (!readInteger(entries[k], values[k]))
+      return false;
+  return true;
+}
+
 ParameterEntry parseByText(const std::string& text) {
   ParameterEntry entry;
   char* end = nullptr;
@@ -557,15 +636,13 @@ ParameterEntry parseLike(const ParameterEntry& prototype, const std::string& tex
   };
   try {
     if (prototype.isType<int>()) {
-      std::size_t used = 0;
-      const int v = std::stoi(text, &used);
-      if (used != text.size())
+      int v = 0;
+      if (!readInteger(text, v))
         return fail("int");
       entry.setValue(v);
     } else if (prototype.isType<double>()) {
-      std::size_t used = 0;
-      const double v = std::stod(text, &used);
-      if (used != text.size())
+      double v = 0.0;
+      if (!readNumber(text, v))
         return fail("double");
       entry.setValue(v);
     } else if (prototype.isType<bool>()) {
@@ -576,9 +653,15 @@ ParameterEntry parseLike(const ParameterEntry& prototype, const std::string& tex
       else
         return fail("bool");
     } else if (prototype.isType<Array<int>>()) {
-      entry.setValue(Teuchos::fromStringToArray<int>(text));
+      std::vector<int> v;
+      if (!readIntegers(text, v))
+        return fail("Array(int)");
+      entry.setValue(Array<int>(v.begin(), v.end()));
     } else if (prototype.isType<Array<double>>()) {
-      entry.setValue(Teuchos::fromStringToArray<double>(text));
+      std::vector<double> v;
+      if (!readNumbers(text, v))
+        return fail("Array(double)");
+      entry.setValue(Array<double>(v.begin(), v.end()));
     } else if (prototype.isType<Array<std::string>>()) {
       entry.setValue(Teuchos::fromStringToArray<std::string>(text));
     } else {

@@ -108,6 +108,15 @@ bool findValidEntry(const Teuchos::ParameterList& valid, const Teuchos::Paramete
 bool insideOpaqueList(const Teuchos::ParameterList& valid, const Teuchos::ParameterList& user,
                       const std::string& path);
 
+// A deck's numbers are read whole or not at all: decimal, optionally signed, with an optional
+// exponent, from the first character to the last (spaces around are allowed).  Not "0.5x",
+// "1e", "0x10", "nan" or "inf", which C's readers take in part or as special values.
+bool readNumber(const std::string& text, double& value);
+bool readInteger(const std::string& text, int& value);
+// "{a, b, ...}" (Teuchos' array syntax) read entry by entry as above; false if one is not.
+bool readNumbers(const std::string& text, std::vector<double>& values);
+bool readIntegers(const std::string& text, std::vector<int>& values);
+
 // A value typed by its text alone: true/false a bool, an integer an int, a number a double,
 // anything else a string.  For entries of opaque lists.
 Teuchos::ParameterEntry parseByText(const std::string& text);

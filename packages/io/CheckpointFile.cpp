@@ -8,8 +8,8 @@
 #include <cstring>
 #include <filesystem>
 
+#include "core/CapturedOutput.hpp"
 #include "core/Errors.hpp"
-#include "io/CapturedOutput.hpp"
 
 namespace impm {
 

@@ -1,9 +1,9 @@
 #include "io/CsvFile.hpp"
 
+#include "core/CapturedOutput.hpp"
 #include "core/Collective.hpp"
 #include "core/Errors.hpp"
 #include "core/MpiComm.hpp"
-#include "io/CapturedOutput.hpp"
 
 #include <algorithm>
 #include <cerrno>

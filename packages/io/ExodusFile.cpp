@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "core/CapturedOutput.hpp"
 #include "core/Errors.hpp"
-#include "io/CapturedOutput.hpp"
 
 namespace impm {
 

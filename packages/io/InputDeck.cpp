@@ -14,28 +14,9 @@ namespace impm {
 
 namespace {
 
-// The number `text` in full, or false (Teuchos' XML reader takes the longest number at the
-// start: "0.005xyz" would be 0.005, "1e" 1).
-bool readsAs(const std::string& type, const std::string& text) {
-  const auto first = text.find_first_not_of(" \t\n");
-  const auto last = text.find_last_not_of(" \t\n");
-  if (first == std::string::npos)
-    return false;
-  const std::string t = text.substr(first, last - first + 1);
-  std::size_t used = 0;
-  try {
-    if (type == "int")
-      std::stoi(t, &used);
-    else
-      std::stod(t, &used);
-  } catch (const std::exception&) {
-    return false;
-  }
-  return used == t.size();
-}
-
 // Every int and double of the deck, and every entry of their arrays, must be a number from its
-// first character to its last.
+// first character to its last (core/Parameters.hpp, readNumber): Teuchos' XML reader takes
+// the longest number at the start, "0.005xyz" as 0.005 and "1e" as 1.
 void checkNumbers(const Teuchos::XMLObject& list, const std::string& path) {
   for (int k = 0; k < list.numChildren(); ++k) {
     const Teuchos::XMLObject& child = list.getChild(k);
@@ -52,23 +33,16 @@ void checkNumbers(const Teuchos::XMLObject& list, const std::string& path) {
     const bool array = type == "Array(int)" || type == "Array(double)";
     if (type != "int" && type != "double" && !array)
       continue;
-    const std::string element = array ? type.substr(6, type.size() - 7) : type;
-    std::vector<std::string> items;
-    if (array) {
-      const auto open = value.find('{'), close = value.rfind('}');
-      if (open == std::string::npos || close == std::string::npos || close < open)
-        throw InputError(here, "cannot read '" + value + "' as " + type);
-      std::stringstream entries(value.substr(open + 1, close - open - 1));
-      for (std::string item; std::getline(entries, item, ',');)
-        items.push_back(item);
-      if (items.size() == 1 && items[0].find_first_not_of(" \t\n") == std::string::npos)
-        items.clear();  // {}
-    } else {
-      items.push_back(value);
-    }
-    for (const auto& item : items)
-      if (!readsAs(element, item))
-        throw InputError(here, "cannot read '" + value + "' as " + type);
+    double number = 0.0;
+    int integer = 0;
+    std::vector<double> numbers;
+    std::vector<int> integers;
+    const bool read = type == "int"          ? readInteger(value, integer)
+                      : type == "double"     ? readNumber(value, number)
+                      : type == "Array(int)" ? readIntegers(value, integers)
+                                             : readNumbers(value, numbers);
+    if (!read)
+      throw InputError(here, "cannot read '" + value + "' as " + type);
   }
 }
 

@@ -9,11 +9,13 @@
 #include <Thyra_TpetraThyraWrappers.hpp>
 
 #include <cmath>
+#include <functional>
 #include <iomanip>
 #include <limits>
 #include <ostream>
 #include <sstream>
 
+#include "core/CapturedOutput.hpp"
 #include "core/Errors.hpp"
 #include "core/StopRequest.hpp"
 
@@ -192,8 +194,20 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList& params,
       absoluteTolerance_(params.get<double>("Absolute Tolerance")),
       updateTolerance_(params.get<double>("Update Tolerance")),
       maxIterations_(params.get<int>("Maximum Iterations")) {
-  const auto linear =
-      mergedLinearSolverParameters(params.sublist("Linear Solver"), kind, dim, comm->getSize());
+  // The deck's lists are merged over impm's; a value where impm has a sublist (or the
+  // reverse) is the deck's mistake.
+  const auto merged = [](const std::string& path, const std::function<void()>& merge) {
+    try {
+      merge();
+    } catch (const std::exception& e) {
+      throw InputError(path, trilinosMessage(e.what()));
+    }
+  };
+  Teuchos::ParameterList linear;
+  merged("Solver/Linear Solver", [&] {
+    linear =
+        mergedLinearSolverParameters(params.sublist("Linear Solver"), kind, dim, comm->getSize());
+  });
   lows_ = createLinearSolveStrategy(linear, comm, "Solver/Linear Solver");
   // Reuse pays where building costs many Krylov iterations (multigrid); an ILUT of a small
   // system costs less than the iterations a stale one adds, and on the nearly singular
@@ -216,7 +230,7 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList& params,
   newton.set("Forcing Term Method", "Constant");
   newton.sublist("Linear Solver").set("Tolerance", params.get<double>("Linear Tolerance"));
   p.sublist("Printing").set("Output Information", NOX::Utils::Error);
-  p.setParameters(params.sublist("NOX"));
+  merged("Solver/NOX", [&] { p.setParameters(params.sublist("NOX")); });
 }
 
 NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vector& x) const {
@@ -273,15 +287,20 @@ NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vecto
           "Observer", Teuchos::rcp(new IterationRecorder(report, log, indent_, reuse_.get())));
   auto solver = NOX::Solver::buildSolver(group, tests, params);
   StatusType status = Unconverged;
-  try {
-    status = solver->solve();
-  } catch (const StopRequest&) {
-    throw;  // not a failure of the step: the run stops (core/StopRequest.hpp)
-  } catch (const NumericalError& e) {
-    report.failure = e.what();
-  } catch (const std::exception& e) {
-    // Belos and Ifpack2 report breakdowns (NaN residuals, singular factors) by throwing.
-    report.failure = "linear solver failure: " + trilinosMessage(e.what());
+  std::string printed;  // what the linear solvers printed (Ifpack2 a zero pivot, say)
+  {
+    const CapturedOutput quiet(CapturedOutput::Streams::error);
+    try {
+      status = solver->solve();
+    } catch (const StopRequest&) {
+      throw;  // not a failure of the step: the run stops (core/StopRequest.hpp)
+    } catch (const NumericalError& e) {
+      report.failure = e.what();
+    } catch (const std::exception& e) {
+      // Belos and Ifpack2 report breakdowns (NaN residuals, singular factors) by throwing.
+      report.failure = "linear solver failure: " + trilinosMessage(e.what());
+    }
+    printed = quiet.firstLine();
   }
 
   const auto& solution = dynamic_cast<const NOX::Thyra::Vector&>(solver->getSolutionGroup().getX());
@@ -296,6 +315,8 @@ NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vecto
                          ? "no convergence in " + std::to_string(maxIterations_) + " iterations"
                          : "NOX stopped (line search or linear solve failure)";
   }
+  if (!report.converged && !printed.empty())
+    report.failure += "; the linear solver printed: " + printed;
   return report;
 }
 

@@ -13,8 +13,9 @@ well: checkpoints (truncated, bit-flipped, a dimension or a count changed), imag
 bit-flipped, other dimensions in the header) and Exodus meshes (truncated, bit-flipped,
 connectivity or counts that do not match the data).
 
-Each mutant runs under a time limit (and a memory limit), on 1 rank or sometimes 2.  The only
-acceptable outcomes are
+Each mutant runs under a time limit (and a memory limit), on 1 rank or sometimes 2; at the
+limit it gets SIGUSR1, and a run that is alive stops cleanly (a valid mutant may ask for a
+long run), while one that is not is a hang.  The only acceptable outcomes are
   (a) exit status 0 (or 4, a failed verification check of the mutated problem) with a
       complete output directory: the history's rows all complete, the Exodus files readable;
   (b) a non-zero exit status with exactly one line "impm: error: <file>: ..." naming a file
@@ -438,6 +439,11 @@ def judge(m, returncode, stdout, stderr, timed_out):
     for marker in ("terminate called", "Throw number", "Traceback", "Segmentation", "Abort"):
         if marker in stdout or marker in stderr:
             return "%r in the output" % marker
+    if returncode == 5 or "impm: stopped by SIGUSR1" in stderr:  # stopped at the time limit
+        stopped = [l for l in lines if l.startswith("impm: stopped by SIGUSR1")]
+        if len(stopped) != 1 or "; continue with: " not in stopped[0]:
+            return "no clean stop at the time limit"
+        return outputs_readable(out)
     if returncode in (0, 4):
         if "(must be refused)" in m.description:
             return "an invalid value was accepted"
@@ -482,9 +488,15 @@ def run_mutant(args, m):
     try:
         stdout, stderr = p.communicate(timeout=args.timeout)
     except subprocess.TimeoutExpired:
-        timed_out = True
-        os.killpg(p.pid, signal.SIGKILL)
-        stdout, stderr = p.communicate()
+        # A valid mutant may ask for a long run (Final Time = 1e6): one that is alive stops
+        # cleanly on SIGUSR1 (mpirun passes it on) and counts as a run; a hung one does not.
+        os.killpg(p.pid, signal.SIGUSR1)
+        try:
+            stdout, stderr = p.communicate(timeout=30)
+        except subprocess.TimeoutExpired:
+            timed_out = True
+            os.killpg(p.pid, signal.SIGKILL)
+            stdout, stderr = p.communicate()
     verdict = judge(m, p.returncode, stdout, stderr, timed_out)
     return verdict, p.returncode, time.time() - began, stdout, stderr, cmd
 
@@ -516,7 +528,7 @@ def main():
         args.seed, len(corpus.decks), len(corpus.images), len(corpus.meshes),
         len(corpus.checkpoints)), flush=True)
     counts = {"mutants": 0, "exit 0": 0, "exit 4": 0, "input error": 0, "numerical failure": 0,
-              "command-line error": 0, "failures": 0}
+              "command-line error": 0, "stopped at the time limit": 0, "failures": 0}
     failures = []
     number = 0
 
@@ -551,6 +563,8 @@ def main():
                     failures.append((m, verdict))
                     print("FAIL mutant %d (%s, np %d): %s\n     saved in %s" % (
                         m.number, m.description, m.np, verdict, saved), flush=True)
+                elif "impm: stopped by SIGUSR1" in stderr:
+                    counts["stopped at the time limit"] += 1
                 elif rc in (0, 4):
                     counts["exit %d" % rc] += 1
                 elif rc == 2:
@@ -562,11 +576,13 @@ def main():
                 shutil.rmtree(os.path.join(work, "m%06d" % m.number), ignore_errors=True)
     shutil.rmtree(work, ignore_errors=True)
     elapsed = time.time() - began
-    print("impm fuzz: %d mutants in %.0f s: %d ran (%d with a failed verification check), "
-          "%d input errors, %d numerical failures, %d command-line errors; %d failures" % (
-              counts["mutants"], elapsed, counts["exit 0"] + counts["exit 4"], counts["exit 4"],
-              counts["input error"], counts["numerical failure"], counts["command-line error"],
-              counts["failures"]))
+    print("impm fuzz: %d mutants in %.0f s: %d ran (%d with a failed verification check, %d "
+          "stopped cleanly at the time limit), %d input errors, %d numerical failures, %d "
+          "command-line errors; %d failures" % (
+              counts["mutants"], elapsed,
+              counts["exit 0"] + counts["exit 4"] + counts["stopped at the time limit"],
+              counts["exit 4"], counts["stopped at the time limit"], counts["input error"],
+              counts["numerical failure"], counts["command-line error"], counts["failures"]))
     if args.summary:
         with open(args.summary, "w") as f:
             json.dump(dict(counts, seconds=round(elapsed), seed=args.seed), f)

@@ -1,4 +1,4 @@
-#include "io/CapturedOutput.hpp"
+#include "core/CapturedOutput.hpp"
 
 #include <unistd.h>
 
@@ -6,17 +6,18 @@ namespace impm {
 
 namespace {
 
-constexpr int kDescriptors[2] = {STDOUT_FILENO, STDERR_FILENO};
+constexpr int kDescriptors[2] = {STDERR_FILENO, STDOUT_FILENO};
 
 }  // namespace
 
-CapturedOutput::CapturedOutput() {
+CapturedOutput::CapturedOutput(Streams streams)
+    : count_(streams == Streams::outputAndError ? 2 : 1) {
   std::fflush(stdout);
   std::fflush(stderr);
   sink_ = std::tmpfile();
   if (!sink_)
     return;
-  for (int k = 0; k < 2; ++k) {
+  for (int k = 0; k < count_; ++k) {
     saved_[k] = ::dup(kDescriptors[k]);
     if (saved_[k] < 0 || ::dup2(::fileno(sink_), kDescriptors[k]) < 0) {
       for (int j = 0; j <= k; ++j)
@@ -36,7 +37,7 @@ CapturedOutput::~CapturedOutput() {
     return;
   std::fflush(stdout);
   std::fflush(stderr);
-  for (int k = 0; k < 2; ++k) {
+  for (int k = 0; k < count_; ++k) {
     ::dup2(saved_[k], kDescriptors[k]);
     ::close(saved_[k]);
   }
