@@ -2,6 +2,7 @@
 
 #include "app/Bodies.hpp"
 #include "app/BoundaryConditions.hpp"
+#include "app/LoadBalance.hpp"
 #include "app/Output.hpp"
 #include "app/TimeIntegration.hpp"
 #include "app/Verification.hpp"
@@ -57,6 +58,8 @@ Teuchos::ParameterList deckValidParameters() {
   valid.sublist("Time Integration", false, "Static load stepping or time stepping") =
       timeIntegrationValidParameters();
   valid.sublist("Solver", false, "Newton and linear solvers") = NewtonSolver::validParameters();
+  valid.sublist("Load Balance", false, "The ranks' shares of the grid as the particles move") =
+      loadBalanceValidParameters();
   valid.sublist("Output") = outputValidParameters();
   valid.sublist("Verification", false, "Checks against known answers") =
       verificationValidParameters();

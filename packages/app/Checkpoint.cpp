@@ -215,6 +215,12 @@ void writeCheckpoint(const std::string& path, const RunIdentity& identity,
     });
     file->declare("grid_fields", gridFields.getGlobalLength(), gridFields.getNumVectors(), false);
     file->declare("nodal_state", nodal.size() / 4, 4, false);
+    const auto& partition = state.partition;
+    file->attribute("partition_ranks", std::vector<long long>{partition.ranks});
+    file->attribute("partition_imbalance",
+                    std::vector<double>{partition.imbalanceAfterRepartition});
+    if (!partition.cellOwners.empty())  // blocks: no table (and no dimension of length 0)
+      file->declare("cell_owners", partition.cellOwners.size(), 1, true);
   });
   // Particle fields, one at a time: gathered to rank 0 by id.
   const auto host = particles.mirror(Kokkos::DefaultHostExecutionSpace());
@@ -247,6 +253,9 @@ void writeCheckpoint(const std::string& path, const RunIdentity& identity,
   onRoot(*comm, [&] {
     file->write("grid_fields", grid);
     file->write("nodal_state", nodal);
+    const auto& owners = state.partition.cellOwners;
+    if (!owners.empty())
+      file->write("cell_owners", std::vector<long long>(owners.begin(), owners.end()));
     file->commit();
   });
 }
@@ -344,6 +353,25 @@ RunState<Dim> readCheckpoint(const std::string& path, const RunIdentity& identit
     particles.copyFrom(host);
   });
   return state;
+}
+
+Partition readPartition(const std::string& path, const Comm& comm) {
+  Partition partition;
+  collectively(comm, [&] {
+    const CheckpointReader file(path);
+    if (!file.has("cell_owners"))
+      return;  // blocks
+    const auto ranks = file.integers("partition_ranks");
+    const auto imbalance = file.numbers("partition_imbalance");
+    if (ranks.size() != 1 || imbalance.size() != 1)
+      throw FileError(path, "has a malformed partition");
+    partition.ranks = static_cast<int>(ranks[0]);
+    partition.imbalanceAfterRepartition = imbalance[0];
+    const auto owners = file.integerRows("cell_owners", 0, file.shape("cell_owners").first);
+    partition.cellOwners.assign(owners.begin(), owners.end());
+    file.checkSums();
+  });
+  return partition;
 }
 
 CheckpointSeries::CheckpointSeries(const Teuchos::ParameterList& output,

@@ -39,12 +39,25 @@ RunIdentity runIdentity(const Teuchos::ParameterList& deck, const GridGeometry<D
                         const ParticleSet<Dim>& particles, GlobalId totalParticles,
                         const Comm& comm);
 
+// The decomposition of a run whose cells were repartitioned: it holds for that number of
+// ranks only (a restart on another number starts from blocks).
+struct Partition {
+  int ranks = 0;
+  std::vector<int> cellOwners;             // empty: blocks
+  double imbalanceAfterRepartition = 1.0;  // LoadBalance's memory of the last repartition
+};
+
+// The partition a checkpoint holds (blocks for checkpoints written before partitions were).
+// Collective.
+Partition readPartition(const std::string& path, const Comm& comm);
+
 // Everything a checkpoint saves besides the identity.
 template <int Dim>
 struct RunState {
   StepperState stepper;
   std::vector<std::vector<double>> contributions;  // each contribution's state()
   int exodusSteps = 0;                             // time steps in the Exodus files
+  Partition partition;                             // the ranks' cells (app/LoadBalance)
 };
 
 // Writes `path` atomically.  Collective (rank 0 writes; the fields are gathered to it).

@@ -57,6 +57,13 @@ void GridFields<Dim>::update(const StepGrid<Dim>& step) {
   }
 }
 
+template <int Dim>
+void GridFields<Dim>::redistribute(const Teuchos::RCP<const Map>& nodeMap) {
+  MultiVector moved(nodeMap, values_.getNumVectors());
+  moved.doImport(values_, Import(values_.getMap(), nodeMap), Tpetra::INSERT);
+  values_.swap(moved);
+}
+
 template class GridFields<1>;
 template class GridFields<2>;
 

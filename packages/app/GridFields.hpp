@@ -20,6 +20,8 @@ class GridFields {
   const MultiVector& values() const { return values_; }
   MultiVector& values() { return values_; }  // restored at a restart
   void update(const StepGrid<Dim>& step);
+  // The values move to `nodeMap` (the ownership's after a repartition).  Collective.
+  void redistribute(const Teuchos::RCP<const Map>& nodeMap);
 
  private:
   int displacement_ = -1, velocity_ = -1, mass_ = -1;  // first column of each, or -1

@@ -93,6 +93,9 @@ Simulation<Dim>::Simulation(const Teuchos::ParameterList& deck, const std::strin
   const auto& ti = deck_.sublist("Time Integration");
   gridFields_ = std::make_unique<GridFields<Dim>>(
       *ownership_, isStatic(ti) || kinematics_ == Kinematics::totalLagrangian, !isStatic(ti));
+  loadBalance_ = std::make_unique<LoadBalance<Dim>>(
+      deck_.sublist("Load Balance"),
+      kinematics_ == Kinematics::updatedLagrangian && comm_->getSize() > 1);
   if (!restartFile.empty())
     restart(restartFile);
   // A dry build of the first step's system: particles outside the grid, or boundary
@@ -166,6 +169,7 @@ void Simulation<Dim>::addDerivedFields() {
 template <int Dim>
 void Simulation<Dim>::restart(const std::string& file) {
   IMPM_TIMER("checkpoint read");
+  restorePartition(file);
   // The particles the deck makes identified the problem; the checkpoint's replace them.
   particles_ = ParticleSet<Dim>();
   bodies_->declareFields(particles_, method_);
@@ -188,6 +192,32 @@ void Simulation<Dim>::restart(const std::string& file) {
     }
   });
   addDerivedFields();
+  // The uninterrupted run balanced the ranks after the checkpoint's step (the checkpoint was
+  // written before): so does the continued one.
+  balanceAfterStep(restored_->stepper.step);
+}
+
+template <int Dim>
+void Simulation<Dim>::restorePartition(const std::string& file) {
+  const auto partition = readPartition(file, *comm_);
+  if (partition.ranks != comm_->getSize() || partition.cellOwners.empty())
+    return;  // blocks, or another number of ranks: the load balance starts afresh
+  collectively(*comm_, [&] {
+    try {
+      ownership_->repartition(
+          Decomposition<Dim>(ownership_->grid(), comm_->getSize(), partition.cellOwners));
+    } catch (const std::invalid_argument& e) {
+      throw FileError(file, std::string("its partition of the cells does not fit: ") + e.what());
+    }
+  });
+  gridFields_->redistribute(ownership_->nodeMap());
+  loadBalance_->restore(partition.imbalanceAfterRepartition);
+}
+
+template <int Dim>
+void Simulation<Dim>::balanceAfterStep(int step) {
+  const bool log = comm_->getRank() == 0 && verbosity_ != Verbosity::quiet;
+  loadBalance_->afterStep(step, *ownership_, particles_, *gridFields_, log ? &std::cout : nullptr);
 }
 
 template <int Dim>
@@ -195,7 +225,9 @@ void Simulation<Dim>::writeCheckpoint(CheckpointSeries& series, int step,
                                       const Stepper<Dim>& stepper,
                                       const Output<Dim>& output) const {
   IMPM_TIMER("checkpoint");
-  RunState<Dim> state{stepper.state(), {}, output.exodusSteps()};
+  RunState<Dim> state{stepper.state(), {}, output.exodusSteps(), {}};
+  state.partition = {comm_->getSize(), ownership_->decomposition().cellOwners(),
+                     loadBalance_->imbalanceAfterRepartition()};
   for (const auto& c : conditions_)
     state.contributions.push_back(c->state());
   impm::writeCheckpoint<Dim>(series.pathOf(step), identity_, particles_, totalParticles_, state,
@@ -361,7 +393,8 @@ std::unique_ptr<Stepper<Dim>> Simulation<Dim>::makeStepper() {
       conditions_,
       *newton_,
       [this](double t) { applyLoads(t); },
-      [this](const double* x, double* u, double* v) { bodies_->initialNodalState(x, u, v); }};
+      [this](const double* x, double* u, double* v) { bodies_->initialNodalState(x, u, v); },
+      [this](int step) { balanceAfterStep(step); }};
   const auto& timeIntegration = deck_.sublist("Time Integration");
   std::unique_ptr<Stepper<Dim>> stepper;
   if (isStatic(timeIntegration))
@@ -381,6 +414,8 @@ std::vector<std::string> Simulation<Dim>::run() {
     if (!c->reactionName().empty())
       supports.push_back(c->reactionName());
   History<Dim> history(bodies_->columnNames(), supports);
+  if (!restored_)
+    balanceAfterStep(0);  // the bodies may lie in some ranks' cells only
   const auto output = startOutput(history);
   const auto stepper = makeStepper();
   CheckpointSeries checkpoints(deck_.sublist("Output"), outputDirectory_, prefix_);
@@ -435,6 +470,9 @@ std::vector<std::string> Simulation<Dim>::finish(double finalTime,
       return;
     if (counts.builds + counts.reuses > 0)
       std::cout << "  preconditioner: built " << counts.builds << " times, reused " << counts.reuses
+                << " times\n";
+    if (loadBalance_->repartitions() > 0)
+      std::cout << "  load balance: the cells were repartitioned " << loadBalance_->repartitions()
                 << " times\n";
     for (const auto& line : result.report)
       std::cout << "  verification: " << line << "\n";

@@ -13,6 +13,7 @@
 #include "app/Checkpoint.hpp"
 #include "app/GridFields.hpp"
 #include "app/History.hpp"
+#include "app/LoadBalance.hpp"
 #include "app/Output.hpp"
 #include "app/ProgressLog.hpp"
 #include "app/Verification.hpp"
@@ -45,6 +46,9 @@ class Simulation {
  private:
   void setUp(const Teuchos::ParameterList& deck);
   void restart(const std::string& file);
+  // A checkpoint's partition of the cells, when it was made on this many ranks.
+  void restorePartition(const std::string& file);
+  void balanceAfterStep(int step);
   void addDerivedFields();
   // Collective; rank 0 then updates the series (the newest link, the oldest removed).
   void writeCheckpoint(CheckpointSeries& series, int step, const Stepper<Dim>& stepper,
@@ -81,6 +85,7 @@ class Simulation {
   std::unique_ptr<ProgressLog> progress_;  // made when run() starts
   std::unique_ptr<Verification> verification_;
   std::unique_ptr<GridFields<Dim>> gridFields_;
+  std::unique_ptr<LoadBalance<Dim>> loadBalance_;
   RunIdentity identity_;                     // what a checkpoint of this run must match
   std::unique_ptr<RunState<Dim>> restored_;  // the checkpoint's state, on a restart
 };

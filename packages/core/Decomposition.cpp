@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace impm {
 
@@ -50,13 +51,33 @@ Decomposition<Dim>::Decomposition(const GridGeometry<Dim>& grid, int numRanks)
 }
 
 template <int Dim>
+Decomposition<Dim>::Decomposition(const GridGeometry<Dim>& grid, int numRanks,
+                                  std::vector<int> cellOwners)
+    : Decomposition(grid, numRanks) {
+  if (static_cast<GlobalId>(cellOwners.size()) != grid.numCells())
+    throw std::invalid_argument("a decomposition table needs one rank per cell");
+  for (int owner : cellOwners)
+    if (owner < 0 || owner >= numRanks)
+      throw std::invalid_argument("a decomposition table names a rank that does not exist");
+  owners_ = std::make_shared<const std::vector<int>>(std::move(cellOwners));
+}
+
+template <int Dim>
+const std::vector<int>& Decomposition<Dim>::cellOwners() const {
+  static const std::vector<int> none;
+  return owners_ ? *owners_ : none;
+}
+
+template <int Dim>
 int Decomposition<Dim>::blockOf(int d, int cell) const {
   const auto& s = start_[d];
   return static_cast<int>(std::upper_bound(s.begin(), s.end(), cell) - s.begin()) - 1;
 }
 
 template <int Dim>
-int Decomposition<Dim>::rankOfBlockIndex(const int cellIndex[Dim]) const {
+int Decomposition<Dim>::rankOfCellIndex(const int cellIndex[Dim]) const {
+  if (owners_)
+    return (*owners_)[static_cast<std::size_t>(grid_.cellId(cellIndex))];
   int rank = 0;
   for (int d = Dim - 1; d >= 0; --d)
     rank = rank * blocks_[d] + blockOf(d, cellIndex[d]);
@@ -67,7 +88,7 @@ template <int Dim>
 int Decomposition<Dim>::ownerOfCell(GlobalId cell) const {
   int idx[Dim];
   grid_.cellIndex(cell, idx);
-  return rankOfBlockIndex(idx);
+  return rankOfCellIndex(idx);
 }
 
 template <int Dim>
@@ -76,7 +97,7 @@ int Decomposition<Dim>::ownerOfNode(GlobalId node) const {
   grid_.nodeIndex(node, idx);
   for (int d = 0; d < Dim; ++d)
     idx[d] = std::min(idx[d], grid_.cells[d] - 1);
-  return rankOfBlockIndex(idx);
+  return rankOfCellIndex(idx);
 }
 
 template <int Dim>
@@ -84,11 +105,19 @@ int Decomposition<Dim>::ownerOfPoint(const double x[Dim]) const {
   int idx[Dim];
   for (int d = 0; d < Dim; ++d)
     idx[d] = grid_.cellAlong(d, x[d]);
-  return rankOfBlockIndex(idx);
+  return rankOfCellIndex(idx);
 }
 
 template <int Dim>
 std::vector<GlobalId> Decomposition<Dim>::owned(int rank, bool nodes) const {
+  if (owners_) {  // every cell, or node, whose owner is rank: ascending by construction
+    std::vector<GlobalId> ids;
+    const GlobalId count = nodes ? grid_.numNodes() : grid_.numCells();
+    for (GlobalId id = 0; id < count; ++id)
+      if ((nodes ? ownerOfNode(id) : (*owners_)[static_cast<std::size_t>(id)]) == rank)
+        ids.push_back(id);
+    return ids;
+  }
   // The rank's block of cells is [start_[d][b], start_[d][b + 1]) along each direction; its
   // nodes are the same range, plus the last node of the grid for the last block.
   int lo[Dim], hi[Dim];

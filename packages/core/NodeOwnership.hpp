@@ -1,6 +1,7 @@
 #pragma once
-// Which rank owns which grid node, as a Tpetra map over all grid nodes (built once per
-// grid).  Used to find the active nodes of a step and to gather nodal output.
+// Which rank owns which grid node, as a Tpetra map over all grid nodes (built with the
+// decomposition, again when it is repartitioned).  Used to find the active nodes of a step and
+// to gather nodal output.
 
 #include <Teuchos_RCP.hpp>
 
@@ -13,6 +14,10 @@ template <int Dim>
 class NodeOwnership {
  public:
   NodeOwnership(const GridGeometry<Dim>& grid, const Teuchos::RCP<const Comm>& comm);
+
+  // The cells (and so the nodes) go to the ranks `decomposition` says.  Collective.  The
+  // caller moves what lives on the old node map (core/Repartition.hpp).
+  void repartition(Decomposition<Dim> decomposition);
 
   const GridGeometry<Dim>& grid() const { return grid_; }
   const Decomposition<Dim>& decomposition() const { return decomposition_; }

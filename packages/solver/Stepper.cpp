@@ -112,6 +112,8 @@ void Stepper<Dim>::accept(StepRecord& record, const StepGrid<Dim>& grid,
   if (setup_.kinematics == Kinematics::updatedLagrangian) {
     IMPM_TIMER("migration");  // particles live on the rank that owns their cell
     migrateToOwners(setup_.particles, setup_.ownership.decomposition(), comm);
+    if (setup_.afterMigration)
+      setup_.afterMigration(record.step);
   }
 }
 

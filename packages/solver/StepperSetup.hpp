@@ -28,6 +28,9 @@ struct StepperSetup {
   // Total-Lagrangian dynamics keeps nodal values (FEM): their initial displacement and
   // velocity at node position x (the deck's fields interpolated at the nodes).
   std::function<void(const double* x, double* u, double* v)> initialNodalState;
+  // Called after each accepted step's migration (updated Lagrangian): the load balance may
+  // repartition the cells and move the particles again.  May be empty.
+  std::function<void(int step)> afterMigration;
 };
 
 // What a stepper carries from one step to the next: all a restart needs to continue as if

@@ -24,11 +24,11 @@ import sys
 import tempfile
 
 
-def run_impm(args, deck, out_dir, sets, np=1):
+def run_impm(args, deck, out_dir, sets, np=1, options=()):
     cmd = []
     if np > 1:
         cmd += shlex.split(args.mpiexec or "mpiexec") + [str(np)]
-    cmd += [args.impm, "--output-dir", out_dir]
+    cmd += [args.impm, "--output-dir", out_dir] + list(options)
     for s in sets:
         cmd += ["--set", s]
     cmd.append(deck)
@@ -282,13 +282,21 @@ def ranks(args):
     results, conserved_failures = {}, []
     for np in args.np:
         out = tempfile.mkdtemp(prefix="impm-np%d-" % np, dir=".")
-        r = run_impm(args, args.deck, out, ["Solver/Print Iterations=false"] + args.set, np)
+        r = run_impm(args, args.deck, out, ["Solver/Print Iterations=false"] + args.set, np,
+                     ["--verbose"] if args.expect_log else [])
         if r.returncode != 0:
             print(r.stdout, r.stderr)
             sys.exit("impm failed on %d ranks" % np)
         results[np] = read_csv(os.path.join(out, stem(args.deck) + "_particles.csv"))
         history = read_csv(os.path.join(out, stem(args.deck) + "_history.csv"))
         shutil.rmtree(out)
+        if np > 1 and args.expect_log:
+            found = re.findall(args.expect_log, r.stdout)
+            print("%d ranks: %d log lines match %r%s" % (np, len(found), args.expect_log,
+                  "".join("\n  " + f for f in found[:5])))
+            if not found:
+                conserved_failures.append("on %d ranks the log does not match %r"
+                                          % (np, args.expect_log))
         for c in args.conserved:
             values = [float(r[c]) for r in history]
             drift = max(abs(v - values[0]) for v in values) / max(abs(values[0]), 1e-300)
@@ -592,6 +600,8 @@ def main():
     r.add_argument("--atol", type=float, default=0.0,
                    help="a column whose values all stay below this is round-off (a zero "
                         "shear, say) and is compared absolutely")
+    r.add_argument("--expect-log", help="a regular expression the log of every run on more "
+                   "than one rank must match (the runs print every step)")
     r.add_argument("--conserved", nargs="+", default=[],
                    help="history columns that must stay constant to 1e-13 relative")
     r.add_argument("--set", action="append", default=[])

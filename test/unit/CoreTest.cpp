@@ -358,3 +358,89 @@ TEST(ParticleRegistry, MaterialMembersAreRebuiltAfterMigration) {
 
 }  // namespace
 }  // namespace impm
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include <array>
+
+#include "core/NodeOwnership.hpp"
+#include "core/Repartition.hpp"
+
+namespace impm {
+namespace {
+
+TEST(Decomposition, ATableGivesEveryCellItsRankAndItsNodesFollow) {
+  const auto g = makeGridGeometry<2>({0.0, 0.0}, {4.0, 2.0}, {4, 2});
+  // Ranks 0..2 in a pattern no block decomposition has.
+  const std::vector<int> owners = {2, 0, 0, 1, 2, 2, 1, 1};
+  const Decomposition<2> d(g, 3, owners);
+  std::vector<int> nodes(g.numNodes(), 0);
+  for (int r = 0; r < 3; ++r) {
+    for (auto c : d.ownedCells(r))
+      EXPECT_EQ(owners[c], r);
+    for (auto n : d.ownedNodes(r)) {
+      ++nodes[n];
+      EXPECT_EQ(d.ownerOfNode(n), r);
+    }
+  }
+  for (int count : nodes)
+    EXPECT_EQ(count, 1);
+  // A node goes with the cell it is the lower-left corner of; the top and right edges with
+  // the cells below and to the left of them.
+  EXPECT_EQ(d.ownerOfNode(0), 2);   // node (0,0), cell 0
+  EXPECT_EQ(d.ownerOfNode(4), 1);   // node (4,0), cell 3
+  EXPECT_EQ(d.ownerOfNode(14), 1);  // node (4,2), cell 7
+  const double inCell5[2] = {1.5, 1.5};
+  EXPECT_EQ(d.ownerOfPoint(inCell5), 2);
+  EXPECT_THROW(Decomposition<2>(g, 3, std::vector<int>(7, 0)), std::invalid_argument);
+  EXPECT_THROW(Decomposition<2>(g, 3, std::vector<int>(8, 3)), std::invalid_argument);
+}
+
+// All the particles start in the cells of rank 0 (the lower rows of a column); a repartition
+// must spread them over the ranks in about equal counts, with one table on every rank.
+TEST(Repartition, SpreadsParticlesCrowdedOnOneRank) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  const int size = comm->getSize(), rank = comm->getRank();
+  NodeOwnership<2> own(makeGridGeometry<2>({0.0, 0.0}, {2.0, 16.0}, {2, 16}), comm);
+  const auto& grid = own.grid();
+  // Four particles per cell in the lowest rows that rank 0 owns, at most two rows.
+  std::vector<std::array<double, 2>> points;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i)
+      for (int k = 0; k < 4; ++k) {
+        const double x[2] = {i + 0.2 + 0.2 * k, j + 0.5};
+        if (own.decomposition().ownerOfPoint(x) == rank)
+          points.push_back({x[0], x[1]});
+      }
+  ParticleSet<2> ps(points.size());
+  auto x = Kokkos::create_mirror_view(ps.x);
+  for (std::size_t p = 0; p < points.size(); ++p)
+    x(p, 0) = points[p][0], x(p, 1) = points[p][1];
+  Kokkos::deep_copy(ps.x, x);
+  const double before = particleImbalance(ps.size(), *comm);
+  EXPECT_DOUBLE_EQ(before, size == 1 ? 1.0 : static_cast<double>(size));
+  auto partition = repartitionCells(own.decomposition(), ps, comm);
+  const double predicted = partition.imbalance;
+  own.repartition(std::move(partition.decomposition));
+  migrateToOwners(ps, own.decomposition(), *comm);
+  GlobalId total = 0;
+  const GlobalId mine = static_cast<GlobalId>(ps.size());
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, mine, Teuchos::outArg(total));
+  EXPECT_EQ(total, 16);
+  // 16 particles in 4 cells of 4: ranks get whole cells, so 1, 2 and 4 ranks balance exactly,
+  // 3 ranks to 8 against a mean of 16/3.
+  const double after = particleImbalance(ps.size(), *comm);
+  EXPECT_LE(after, size == 3 ? 1.5 + 1e-12 : 1.0 + 1e-12);
+  EXPECT_DOUBLE_EQ(predicted, after);
+  // Every rank holds the same table.
+  const auto& owners = own.decomposition().cellOwners();
+  ASSERT_EQ(static_cast<GlobalId>(owners.size()), grid.numCells());
+  std::vector<double> local(owners.begin(), owners.end());
+  const auto all = gatherToAll(*comm, local);
+  for (int r = 0; r < size; ++r)
+    for (std::size_t c = 0; c < owners.size(); ++c)
+      EXPECT_EQ(all[r * owners.size() + c], owners[c]);
+}
+
+}  // namespace
+}  // namespace impm
