@@ -1,0 +1,59 @@
+#!/usr/bin/env python3
+"""Benchmark: the strongly compressed column on 1 and 2 ranks, the load balance's case.
+AMPLE's Hencky column (input/column_hencky.xml: E = 10 kPa, gimp, 40 load steps) on 1 x N
+cells compresses to about a third of its height, so a fixed split of the cells leaves every
+particle on one rank from the 20th load step; the cells are repartitioned by their particles
+(Load Balance).  Wall time (medians of alternating runs), the slowest rank's Newton solve and
+repartition timers, the repartitions and the speed-up, with Repartition on and off.
+
+usage: compressed_column.py --impm build/drivers/impm [--cells 65536] [--repeat 3]
+                            [--write doc/performance.md]
+"""
+
+import argparse
+import re
+import statistics
+
+from benchlib import ROOT, run_impm, write_section
+import os
+
+DECK = os.path.join(ROOT, "input", "column_hencky.xml")
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__,
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--impm", required=True)
+    p.add_argument("--cells", type=int, default=65536)
+    p.add_argument("--repeat", type=int, default=3)
+    p.add_argument("--write", help="replace the compressed-column section of this file")
+    args = p.parse_args()
+    cases = [(1, True), (2, True), (2, False)]
+    runs = {c: [] for c in cases}
+    for _ in range(args.repeat):  # alternating, so that the machine's drift hits every case
+        for np, balance in cases:
+            sets = ["Grid/Cells={1,%d}" % args.cells,
+                    "Load Balance/Repartition=%s" % ("true" if balance else "false")]
+            runs[(np, balance)].append(run_impm(args.impm, DECK, sets, np=np))
+            r = runs[(np, balance)][-1]
+            print("%d rank(s), repartition %s: %.1f s" % (np, balance, r.wall), flush=True)
+    one = statistics.median(r.wall for r in runs[(1, True)])
+    lines = ["| cells (particles) | ranks | repartition | wall [s] (min-max) | speed-up | "
+             "Newton solve [s] | repartition [s] | peak memory [MB] |",
+             "|---|---|---|---|---|---|---|---|"]
+    for np, balance in cases:
+        rs = runs[(np, balance)]
+        wall = statistics.median(r.wall for r in rs)
+        lines.append("| 1x%d (%d) | %d | %s | %.1f (%.1f-%.1f) | %.2f | %.1f | %.2f | %.0f |" % (
+            args.cells, 4 * args.cells, np, "on" if balance else "off", wall,
+            min(r.wall for r in rs), max(r.wall for r in rs), one / wall,
+            statistics.median(r.timer("Newton solve") for r in rs),
+            statistics.median(r.timer("repartition") for r in rs),
+            statistics.median(r.memory for r in rs)))
+        print(lines[-1], flush=True)
+    if args.write:
+        write_section(args.write, "compressed-column", "\n".join(lines) + "\n")
+
+
+if __name__ == "__main__":
+    main()
