@@ -96,7 +96,8 @@ case "$cmd" in
   benchmark)
     install_missing "${build_packages[@]}"
     build
-    for b in static_bar dynamic_bar nonlinear_bar column column_grid scaling geometry; do
+    for b in static_bar dynamic_bar nonlinear_bar column column_grid scaling geometry \
+        compressed_column; do
       python3 "$here/test/benchmark/$b.py" --impm "$build_dir/drivers/impm" \
         --write "$here/doc/performance.md"
     done
