@@ -588,26 +588,29 @@ bool readInteger(const std::string& text, int& value) {
   return true;
 }
 
-bool readNumbers(const std::string& text, std::vector<double>& values) {
+namespace {
+
+// "{a, b, ...}" entry by entry with `readOne`.
+template <class T, class Read>
+bool readArray(const std::string& text, std::vector<T>& values, Read readOne) {
   std::vector<std::string> entries;
   if (!arrayEntries(text, entries))
     return false;
   values.resize(entries.size());
   for (std::size_t k = 0; k < entries.size(); ++k)
-    if (!readNumber(entries[k], values[k]))
+    if (!readOne(entries[k], values[k]))
       return false;
   return true;
 }
 
+}  // namespace
+
+bool readNumbers(const std::string& text, std::vector<double>& values) {
+  return readArray(text, values, [](const std::string& t, double& v) { return readNumber(t, v); });
+}
+
 bool readIntegers(const std::string& text, std::vector<int>& values) {
-  std::vector<std::string> entries;
-  if (!arrayEntries(text, entries))
-    return false;
-  values.resize(entries.size());
-  for (std::size_t k = 0; k < entries.size(); ++k)
-    if (!readInteger(entries[k], values[k]))
-      return false;
-  return true;
+  return readArray(text, values, [](const std::string& t, int& v) { return readInteger(t, v); });
 }
 
 ParameterEntry parseByText(const std::string& text) {

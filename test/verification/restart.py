@@ -147,6 +147,22 @@ def exodus_times(out, deck):
     return times
 
 
+def same_outputs(straight, continued, deck):
+    """The problems with a continued run whose particle and history CSV must be the
+    uninterrupted run's, bit for bit, and whose Exodus files must hold the same time steps."""
+    problems = []
+    for kind in ("particles", "history"):
+        same = text(straight, deck, kind) == text(continued, deck, kind)
+        print("%s CSV: %s" % (kind, "identical" if same else "DIFFERENT"))
+        if not same:
+            problems.append("the %s CSV differs from the uninterrupted run's" % kind)
+    a, b = exodus_times(straight, deck), exodus_times(continued, deck)
+    print("Exodus files: %s" % ("the same time steps" if a == b else "DIFFERENT time steps"))
+    if a != b:
+        problems.append("the Exodus files hold other time steps: %s against %s" % (b, a))
+    return problems
+
+
 def session_processes(sid):
     """The processes of session sid (mpirun puts its ranks in process groups of their own,
     but they stay in its session)."""
@@ -230,15 +246,7 @@ def crash(args):
         failures.append("only %d of %d kills landed in a checkpoint write" % (kills, args.kills))
     if not finished:
         run(args, args.np, crashed, sets, restart)
-    for kind in ("particles", "history"):
-        same = text(straight, args.deck, kind) == text(crashed, args.deck, kind)
-        print("%s CSV: %s" % (kind, "identical" if same else "DIFFERENT"))
-        if not same:
-            failures.append("the %s CSV differs from the uninterrupted run's" % kind)
-    a, b = exodus_times(straight, args.deck), exodus_times(crashed, args.deck)
-    print("Exodus files: %s" % ("the same time steps" if a == b else "DIFFERENT time steps"))
-    if a != b:
-        failures.append("the Exodus files hold other time steps: %s against %s" % (b, a))
+    failures += same_outputs(straight, crashed, args.deck)
     if kills == 0:
         failures.append("no kill landed")
     shutil.rmtree(work)
@@ -306,15 +314,7 @@ def stop(args):
     if r.returncode != 0:
         sys.exit("FAIL: the continued run failed: %s\n%s%s" % (" ".join(continued),
                                                                r.stdout[-2000:], r.stderr))
-    for kind in ("particles", "history"):
-        same = text(straight, args.deck, kind) == text(stopped, args.deck, kind)
-        print("%s CSV: %s" % (kind, "identical" if same else "DIFFERENT"))
-        if not same:
-            failures.append("the %s CSV differs from the uninterrupted run's" % kind)
-    a, b = exodus_times(straight, args.deck), exodus_times(stopped, args.deck)
-    print("Exodus files: %s" % ("the same time steps" if a == b else "DIFFERENT time steps"))
-    if a != b:
-        failures.append("the Exodus files hold other time steps: %s against %s" % (b, a))
+    failures += same_outputs(straight, stopped, args.deck)
     shutil.rmtree(work)
     for f in failures:
         print("FAIL:", f)
