@@ -394,7 +394,8 @@ std::unique_ptr<Stepper<Dim>> Simulation<Dim>::makeStepper() {
       *newton_,
       [this](double t) { applyLoads(t); },
       [this](const double* x, double* u, double* v) { bodies_->initialNodalState(x, u, v); },
-      [this](int step) { balanceAfterStep(step); }};
+      [this](int step) { balanceAfterStep(step); },
+      deck_.sublist("Solver").get<bool>("Graph Reuse")};
   const auto& timeIntegration = deck_.sublist("Time Integration");
   std::unique_ptr<Stepper<Dim>> stepper;
   if (isStatic(timeIntegration))
@@ -455,12 +456,13 @@ std::vector<std::string> Simulation<Dim>::run() {
       writeCheckpoint(checkpoints, state.step, *stepper, *output);
     throw RunStopped(state.step, state.time, !betweenSteps, checkpoints.pathOf(state.step));
   }
-  return finish(finalTime, output->files());
+  return finish(finalTime, output->files(), stepper->layouts());
 }
 
 template <int Dim>
 std::vector<std::string> Simulation<Dim>::finish(double finalTime,
-                                                 const std::vector<std::string>& files) const {
+                                                 const std::vector<std::string>& files,
+                                                 const LayoutCache<Dim>& layouts) const {
   const auto F = reactions();
   const auto result = verification_->check<Dim>(particles_, comm_, finalTime, F[0], F[1]);
   const auto counts = newton_->preconditionerCounts();
@@ -470,6 +472,9 @@ std::vector<std::string> Simulation<Dim>::finish(double finalTime,
       return;
     if (counts.builds + counts.reuses > 0)
       std::cout << "  preconditioner: built " << counts.builds << " times, reused " << counts.reuses
+                << " times\n";
+    if (layouts.built() + layouts.reused() > 1)
+      std::cout << "  graph: built " << layouts.built() << " times, reused " << layouts.reused()
                 << " times\n";
     if (loadBalance_->repartitions() > 0)
       std::cout << "  load balance: the cells were repartitioned " << loadBalance_->repartitions()

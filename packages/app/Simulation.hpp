@@ -65,7 +65,8 @@ class Simulation {
   void printHeader() const;
   void printProgress(const StepRecord& record, const std::vector<double>& F) const;
   double progressFraction(double time, double loadFactor) const;
-  std::vector<std::string> finish(double finalTime, const std::vector<std::string>& files) const;
+  std::vector<std::string> finish(double finalTime, const std::vector<std::string>& files,
+                                  const LayoutCache<Dim>& layouts) const;
 
   Teuchos::RCP<const Comm> comm_;
   Teuchos::ParameterList deck_;

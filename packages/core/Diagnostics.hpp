@@ -1,11 +1,13 @@
 #pragma once
 // What numerical-failure messages need: the first particle or unknown whose values are not
-// finite, and how to name a particle to a user ("particle 12 at x = (0.5, 0.25)").
+// finite, and how to name a particle or a grid node to a user ("particle 12 at x = (0.5,
+// 0.25)", "grid node 7 at x = (1, 0.5)").
 
 #include <cstddef>
 #include <sstream>
 #include <string>
 
+#include "core/Grid.hpp"
 #include "core/ParticleSet.hpp"
 
 namespace impm {
@@ -63,6 +65,19 @@ std::string particleLabel(const ParticleSet<Dim, Space>& particles, std::size_t 
   s << "particle " << id(0) << " at x = (";
   for (int d = 0; d < Dim; ++d)
     s << (d ? ", " : "") << x(0, d);
+  s << ")";
+  return s.str();
+}
+
+// "grid node <id> at x = (x, y)".
+template <int Dim>
+std::string nodeLabel(const GridGeometry<Dim>& grid, GlobalId node) {
+  int idx[Dim];
+  grid.nodeIndex(node, idx);
+  std::ostringstream s;
+  s << "grid node " << node << " at x = (";
+  for (int d = 0; d < Dim; ++d)
+    s << (d ? ", " : "") << grid.nodeCoord(d, idx[d]);
   s << ")";
   return s.str();
 }

@@ -12,6 +12,7 @@ NodeOwnership<Dim>::NodeOwnership(const GridGeometry<Dim>& grid,
 template <int Dim>
 void NodeOwnership<Dim>::repartition(Decomposition<Dim> decomposition) {
   decomposition_ = std::move(decomposition);
+  ++revision_;
   const auto owned = decomposition_.ownedNodes(comm_->getRank());
   const std::vector<GO> gids(owned.begin(), owned.end());
   nodeMap_ = Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(grid_.numNodes()),

@@ -25,12 +25,15 @@ class NodeOwnership {
   // Map of all grid nodes, each owned by the rank of its cell.
   const Teuchos::RCP<const Map>& nodeMap() const { return nodeMap_; }
   int ownerOfNode(GlobalId node) const { return decomposition_.ownerOfNode(node); }
+  // Counts the repartitions: what was built on the node map is stale when it changed.
+  int revision() const { return revision_; }
 
  private:
   GridGeometry<Dim> grid_;
   Teuchos::RCP<const Comm> comm_;
   Decomposition<Dim> decomposition_;
   Teuchos::RCP<const Map> nodeMap_;
+  int revision_ = 0;
 };
 
 }  // namespace impm

@@ -1,8 +1,6 @@
 #include "solver/GridSystem.hpp"
 
-#include "assembly/EntryDofs.hpp"
 #include "assembly/Forces.hpp"
-#include "assembly/Graph.hpp"
 #include "basis/CornerWeights.hpp"
 #include "core/Collective.hpp"
 #include "core/Diagnostics.hpp"
@@ -19,21 +17,6 @@
 namespace impm {
 
 namespace {
-
-// Numbers the unknowns: the nodes the particles touch, plus the contributions' extras.
-template <int Dim>
-DofMap<Dim> numberUnknowns(const NodeOwnership<Dim>& ownership, const ParticleGridMap<Dim>& map,
-                           const std::vector<std::shared_ptr<Contribution<Dim>>>& contributions,
-                           std::vector<int>& firstExtra) {
-  auto node = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), map.node);
-  std::vector<GlobalId> touched(node.data(), node.data() + node.extent(0));
-  std::vector<ExtraDof> extras;
-  for (const auto& c : contributions) {
-    firstExtra.push_back(static_cast<int>(extras.size()));
-    c->prepare(ownership, extras, touched);
-  }
-  return DofMap<Dim>(ownership, std::move(touched), extras);
-}
 
 // The map, built on every rank; a particle outside the grid on one rank stops all of them.
 // With total-Lagrangian kinematics the map is built at the reference positions and domains.
@@ -65,7 +48,8 @@ template <int Dim>
 GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
                             Kinematics kinematics, const ParticleSet<Dim>& particles,
                             const Materials<Dim>& materials, const Contributions& contributions,
-                            double time, double loadFactor, StepWorkspace<Dim>* workspace)
+                            double time, double loadFactor, StepWorkspace<Dim>* workspace,
+                            LayoutCache<Dim>* layouts)
     : grid_(ownership.grid()),
       kinematics_(kinematics),
       particles_(particles),
@@ -74,32 +58,17 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
       time_(time),
       loadFactor_(loadFactor),
       particleGridMap_(buildMapCollectively(ownership, method, kinematics, particles)),
-      dofs_(numberUnknowns(ownership, particleGridMap_, contributions, firstExtra_)),
+      layout_(layoutOf(LayoutInputs<Dim>{ownership, particleGridMap_, particles, contributions,
+                                         time, loadFactor},
+                       layouts ? *layouts : ownLayouts_)),
+      firstExtra_(layout_->firstExtra),
+      dofs_(layout_->dofs),
+      entryDofs_(layout_->entryDofs),
+      entryCols_(layout_->entryCols),
+      graph_(layout_->graph),
+      importer_(layout_->importer),
       work_((workspace ? *workspace : ownWorkspace_).arrays(particles.size())),
       trial_(particles, materials) {
-  // A failure on one rank must stop every rank (the next steps are collective).
-  collectively(*ownership.comm(),
-               [&] { entryDofs_ = impm::entryDofs(particleGridMap_, *dofs_.overlapMap()); });
-  std::vector<std::pair<GO, GO>> couplings;
-  for (std::size_t c = 0; c < contributions_.size(); ++c)
-    contributions_[c]->couplings(context(static_cast<int>(c)), couplings);
-  for (GO padding : dofs_.paddingDofs())  // its row holds its diagonal only
-    couplings.emplace_back(padding, padding);
-  checkEveryActiveNodeIsIntegrated();
-  {
-    IMPM_TIMER("graph");
-    graph_ = buildGraph(particleGridMap_, entryDofs_, dofs_, couplings);
-  }
-  collectively(*ownership.comm(),
-               [&] { entryCols_ = impm::entryColumns(particleGridMap_, *graph_->getColMap()); });
-  importer_ = Teuchos::rcp(new Import(dofs_.ownedMap(), dofs_.overlapMap()));
-  nodalMask_ = Teuchos::rcp(new Vector(dofs_.ownedMap()));
-  {
-    auto mask = nodalMask_->getLocalViewHost(Tpetra::Access::OverwriteAll);
-    const auto& owned = *dofs_.ownedMap();
-    for (std::size_t k = 0; k < owned.getNodeNumElements(); ++k)
-      mask(k, 0) = dofs_.isExtraDof(owned.getGlobalElement(static_cast<LO>(k))) ? 0.0 : 1.0;
-  }
   // Prescribed rows get the size of a stiffness diagonal (modulus h^(Dim-2)), so that they
   // neither dominate nor vanish in the preconditioner.
   double modulus = 0.0;
@@ -167,36 +136,6 @@ void GridSystem<Dim>::applyConstraints(const Vector& x, Vector* residual,
             row.value(k) = row.colidx(k) == rowCol(i, 1) ? scale : 0.0;
         });
   }
-}
-
-template <int Dim>
-void GridSystem<Dim>::checkEveryActiveNodeIsIntegrated() const {
-  // Nodes only a boundary condition reaches would have empty rows: mark the nodes the
-  // integration points touch and bring the marks to the owners.
-  Vector marks(dofs_.overlapMap());
-  {
-    auto local = marks.getLocalViewHost(Tpetra::Access::ReadWrite);
-    auto lids = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), entryDofs_);
-    for (std::size_t k = 0; k < lids.extent(0); ++k)
-      for (int d = 0; d < Dim; ++d)
-        local(lids(k) + d, 0) = 1.0;
-  }
-  Vector owned(dofs_.ownedMap());
-  owned.doExport(marks, Export(dofs_.overlapMap(), dofs_.ownedMap()), Tpetra::ADD);
-  collectively(*dofs_.ownedMap()->getComm(), [&] {
-    auto values = owned.getData();
-    const auto& map = *dofs_.ownedMap();
-    for (decltype(values.size()) k = 0; k < values.size(); ++k) {
-      const GO dof = map.getGlobalElement(static_cast<LO>(k));
-      if (values[k] > 0.0 || dofs_.isExtraDof(dof))
-        continue;
-      throw NumericalError(
-          nodeLabel(dof / Dim) +
-          " is reached by a boundary condition but by no integration point, so its row of the "
-          "system is empty (classic MPM does this when a body's end lies in a cell that holds "
-          "no particle centre); use gimp or cpdi, or more particles per cell");
-    }
-  });
 }
 
 template <int Dim>
@@ -269,24 +208,12 @@ void GridSystem<Dim>::requireFiniteStress() const {
 }
 
 template <int Dim>
-std::string GridSystem<Dim>::nodeLabel(GlobalId node) const {
-  int idx[Dim];
-  grid_.nodeIndex(node, idx);
-  std::ostringstream s;
-  s << "grid node " << node << " at x = (";
-  for (int d = 0; d < Dim; ++d)
-    s << (d ? ", " : "") << grid_.nodeCoord(d, idx[d]);
-  s << ")";
-  return s.str();
-}
-
-template <int Dim>
 std::string GridSystem<Dim>::unknownLabel(GO dof) const {
   if (dofs_.isExtraDof(dof))
     return "extra unknown " + std::to_string(dof) + " (a boundary force)";
   if (Dim == 1)
-    return nodeLabel(dof);
-  return nodeLabel(dof / Dim) + ", component " + "xyz"[dof % Dim];
+    return nodeLabel(grid_, dof);
+  return nodeLabel(grid_, dof / Dim) + ", component " + "xyz"[dof % Dim];
 }
 
 template <int Dim>

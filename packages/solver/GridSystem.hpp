@@ -20,6 +20,7 @@
 #include "solver/Contribution.hpp"
 #include "solver/ResidualModel.hpp"
 #include "solver/StepWorkspace.hpp"
+#include "solver/SystemLayout.hpp"
 
 namespace impm {
 
@@ -28,12 +29,13 @@ class GridSystem : public ResidualModel {
  public:
   using Contributions = std::vector<std::shared_ptr<Contribution<Dim>>>;
 
-  // Builds the map, the unknowns and the graph.  Collective.  `workspace`: the per-particle
-  // arrays kept across steps (null: the system's own).
+  // Builds the map, then the unknowns and the graph or takes them from `layouts` (see
+  // solver/SystemLayout.hpp).  Collective.  `workspace`: the per-particle arrays kept
+  // across steps; null `workspace` or `layouts`: the system's own.
   GridSystem(const NodeOwnership<Dim>& ownership, Method method, Kinematics kinematics,
              const ParticleSet<Dim>& particles, const Materials<Dim>& materials,
              const Contributions& contributions, double time, double loadFactor,
-             StepWorkspace<Dim>* workspace = nullptr);
+             StepWorkspace<Dim>* workspace = nullptr, LayoutCache<Dim>* layouts = nullptr);
 
   // The inertia term M a of a dynamic step, a = c0 du - r on the nodal unknowns.
   struct Inertia {
@@ -56,7 +58,7 @@ class GridSystem : public ResidualModel {
   // The mass matrix, with 1 on the diagonal of the extra unknowns so that it can be solved.
   Teuchos::RCP<CrsMatrix> massMatrix(MassType type) const;
   // 1 on nodal unknowns, 0 on extra unknowns.
-  const Vector& nodalMask() const { return *nodalMask_; }
+  const Vector& nodalMask() const { return *layout_->nodalMask; }
 
   Teuchos::RCP<const Map> unknownMap() const override { return dofs_.ownedMap(); }
   // Explicit steps, and linear materials whose step is linear in du (1-D, or total
@@ -111,7 +113,6 @@ class GridSystem : public ResidualModel {
   std::vector<std::pair<LO, double>> constrainedRows() const;
   // Rows of prescribed unknowns: residual scale (x_i - value), Jacobian row scale e_i.
   void applyConstraints(const Vector& x, Vector* residual, CrsMatrix* jacobian) const;
-  void checkEveryActiveNodeIsIntegrated() const;
   // NumericalError naming the first particle whose trial stress or tangent is NaN or
   // infinite (local).
   void requireFiniteStress() const;
@@ -119,9 +120,7 @@ class GridSystem : public ResidualModel {
   // which the matrix, holds NaN or inf.  Collective.
   void requireFinite(const Vector& v, const std::string& what) const;
   void requireFinite(const CrsMatrix& J) const;
-  // "grid node 12 at x = (0.5, 0.25)"; with ", component y" for an unknown, or the extra
-  // unknown it is.
-  std::string nodeLabel(GlobalId node) const;
+  // "grid node 12 at x = (0.5, 0.25), component y", or the extra unknown it is.
   std::string unknownLabel(GO dof) const;
 
   Teuchos::RCP<CrsMatrix> explicitJacobian_;  // the explicit steps' matrix, refilled
@@ -132,13 +131,15 @@ class GridSystem : public ResidualModel {
   const Contributions& contributions_;
   double time_, loadFactor_;
   ParticleGridMap<Dim> particleGridMap_;
-  std::vector<int> firstExtra_;
-  DofMap<Dim> dofs_;
-  EntryDofs<> entryDofs_;     // overlap-map index of each map entry's node
-  EntryColumns<> entryCols_;  // each component's index in the Jacobian's column map
-  Teuchos::RCP<FECrsGraph> graph_;
-  Teuchos::RCP<const Import> importer_;
-  Teuchos::RCP<Vector> nodalMask_;
+  LayoutCache<Dim> ownLayouts_{false};
+  std::shared_ptr<const SystemLayout<Dim>> layout_;
+  // The layout's parts, by the names the assembly below uses.
+  const std::vector<int>& firstExtra_;
+  const DofMap<Dim>& dofs_;
+  const EntryDofs<>& entryDofs_;
+  const EntryColumns<>& entryCols_;
+  const Teuchos::RCP<FECrsGraph>& graph_;
+  const Teuchos::RCP<const Import>& importer_;
   Inertia inertia_;
   Teuchos::RCP<Vector> inertiaOverlap_;  // r on the overlap map
   bool frozen_ = false, frozenReady_ = false;

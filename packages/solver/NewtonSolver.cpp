@@ -172,6 +172,10 @@ Teuchos::ParameterList NewtonSolver::validParameters() {
                 "With Preconditioner Reuse: rebuild when a linear solve takes more than this "
                 "times the iterations of the first solve after the last build (at least 5)",
                 Bounds::atLeast(1.0));
+  declareBool(valid, "Graph Reuse", true,
+              "Keep a step's unknowns, graph and importer for the next steps while the "
+              "(particle, node) pairs, the boundary conditions' nodes and the ownership of the "
+              "nodes stay the same (false: build them every step; the results are the same)");
   declareBool(valid, "Print Iterations", true,
               "Print every Newton iteration's residual norm and linear iteration count");
   declareOpaque(valid, "Linear Solver",

@@ -20,13 +20,14 @@ Stepper<Dim>::Stepper(StepperSetup<Dim> setup, double nominal, double minimum)
     : setup_(std::move(setup)),
       log_(setup_.ownership.comm()->getRank() == 0 ? &std::cout : nullptr),
       nominal_(nominal),
-      minimum_(minimum) {}
+      minimum_(minimum),
+      layouts_(setup_.reuseLayout) {}
 
 template <int Dim>
 Teuchos::RCP<GridSystem<Dim>> Stepper<Dim>::buildSystem(double time, double loadFactor) {
   return Teuchos::rcp(new GridSystem<Dim>(setup_.ownership, setup_.method, setup_.kinematics,
                                           setup_.particles, setup_.materials, setup_.contributions,
-                                          time, loadFactor, &workspace_));
+                                          time, loadFactor, &workspace_, &layouts_));
 }
 
 template <int Dim>

@@ -34,6 +34,8 @@ class Stepper {
   // step is committed before it is accepted), and its restoration before run().
   const StepperState& state() const { return accepted_; }
   void restore(const StepperState& state) { state_ = accepted_ = state; }
+  // How often a step's unknowns and graph were built and reused.
+  const LayoutCache<Dim>& layouts() const { return layouts_; }
 
  protected:
   // The size of the next step (after cutbacks and regrowth).
@@ -73,6 +75,7 @@ class Stepper {
  private:
   double nominal_, minimum_;
   StepWorkspace<Dim> workspace_;
+  LayoutCache<Dim> layouts_;
   typename ParticleSet<Dim>::Vectors uBefore_;  // kept from step to step, see firstRows
   std::vector<double> supportForces_;           // of the step being accepted
 };

@@ -31,6 +31,9 @@ struct StepperSetup {
   // Called after each accepted step's migration (updated Lagrangian): the load balance may
   // repartition the cells and move the particles again.  May be empty.
   std::function<void(int step)> afterMigration;
+  // Keep a step's unknowns and graph for the next steps while the (particle, node) pairs
+  // stay the same (solver/SystemLayout.hpp); false: build them every step.
+  bool reuseLayout = true;
 };
 
 // What a stepper carries from one step to the next: all a restart needs to continue as if

@@ -1,0 +1,168 @@
+#include "solver/SystemLayout.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include "assembly/EntryDofs.hpp"
+#include "assembly/Graph.hpp"
+#include "core/Collective.hpp"
+#include "core/Diagnostics.hpp"
+#include "core/Errors.hpp"
+#include "core/Timers.hpp"
+
+namespace impm {
+
+namespace {
+
+bool onEveryRank(bool mine, const Comm& comm) {
+  int local = mine ? 1 : 0, all = 0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, local, Teuchos::outArg(all));
+  return all == 1;
+}
+
+// The nodes the map and the contributions touch and the extra unknowns.  Calls every
+// contribution's prepare(), which the step needs whether or not the layout is reused.
+template <int Dim>
+LayoutKey<Dim> keyOf(const NodeOwnership<Dim>& ownership, const ParticleGridMap<Dim>& map,
+                     const Contributions<Dim>& contributions, std::vector<int>& firstExtra,
+                     std::vector<ExtraDof>& extras) {
+  LayoutKey<Dim> key;
+  key.ownership = &ownership;
+  key.ownershipRevision = ownership.revision();
+  auto rowPtr = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), map.rowPtr);
+  auto node = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), map.node);
+  key.rowPtr.assign(rowPtr.data(), rowPtr.data() + rowPtr.extent(0));
+  key.touched.assign(node.data(), node.data() + node.extent(0));
+  for (const auto& c : contributions) {
+    firstExtra.push_back(static_cast<int>(extras.size()));
+    c->prepare(ownership, extras, key.touched);
+  }
+  for (const auto& e : extras)
+    key.extraNodes.push_back(e.anchorNode);
+  return key;
+}
+
+// Nodes only a boundary condition reaches would have empty rows: mark the nodes the
+// integration points touch and bring the marks to the owners.  Collective.
+template <int Dim>
+void checkEveryActiveNodeIsIntegrated(const GridGeometry<Dim>& grid, const SystemLayout<Dim>& l) {
+  const auto& dofs = l.dofs;
+  Vector marks(dofs.overlapMap());
+  {
+    auto local = marks.getLocalViewHost(Tpetra::Access::ReadWrite);
+    auto lids = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), l.entryDofs);
+    for (std::size_t k = 0; k < lids.extent(0); ++k)
+      for (int d = 0; d < Dim; ++d)
+        local(lids(k) + d, 0) = 1.0;
+  }
+  Vector owned(dofs.ownedMap());
+  owned.doExport(marks, Export(dofs.overlapMap(), dofs.ownedMap()), Tpetra::ADD);
+  collectively(*dofs.ownedMap()->getComm(), [&] {
+    auto values = owned.getData();
+    const auto& map = *dofs.ownedMap();
+    for (decltype(values.size()) k = 0; k < values.size(); ++k) {
+      const GO dof = map.getGlobalElement(static_cast<LO>(k));
+      if (values[k] > 0.0 || dofs.isExtraDof(dof))
+        continue;
+      throw NumericalError(
+          nodeLabel(grid, dof / Dim) +
+          " is reached by a boundary condition but by no integration point, so its row of the "
+          "system is empty (classic MPM does this when a body's end lies in a cell that holds "
+          "no particle centre); use gimp or cpdi, or more particles per cell");
+    }
+  });
+}
+
+// The unknowns, the entries' overlap indices, the importer and the mask.  Collective.
+template <int Dim>
+std::shared_ptr<SystemLayout<Dim>> numberUnknowns(const NodeOwnership<Dim>& ownership,
+                                                  const ParticleGridMap<Dim>& map,
+                                                  std::vector<int> firstExtra,
+                                                  std::vector<GlobalId> touched,
+                                                  const std::vector<ExtraDof>& extras) {
+  auto l = std::make_shared<SystemLayout<Dim>>(std::move(firstExtra),
+                                               DofMap<Dim>(ownership, std::move(touched), extras));
+  const auto& dofs = l->dofs;
+  // A failure on one rank must stop every rank (the next steps are collective).
+  collectively(*ownership.comm(), [&] { l->entryDofs = impm::entryDofs(map, *dofs.overlapMap()); });
+  l->importer = Teuchos::rcp(new Import(dofs.ownedMap(), dofs.overlapMap()));
+  auto mask = Teuchos::rcp(new Vector(dofs.ownedMap()));
+  {
+    auto m = mask->getLocalViewHost(Tpetra::Access::OverwriteAll);
+    const auto& owned = *dofs.ownedMap();
+    for (std::size_t k = 0; k < owned.getNodeNumElements(); ++k)
+      m(k, 0) = dofs.isExtraDof(owned.getGlobalElement(static_cast<LO>(k))) ? 0.0 : 1.0;
+  }
+  l->nodalMask = mask;
+  checkEveryActiveNodeIsIntegrated(ownership.grid(), *l);
+  return l;
+}
+
+}  // namespace
+
+template <int Dim>
+std::shared_ptr<const SystemLayout<Dim>> LayoutCache<Dim>::find(const LayoutKey<Dim>& key,
+                                                                const Comm& comm) const {
+  if (!enabled_ || !onEveryRank(layout_ && key == key_, comm))
+    return nullptr;
+  return layout_;
+}
+
+template <int Dim>
+bool LayoutCache<Dim>::sameCouplings(const std::vector<std::pair<GO, GO>>& couplings,
+                                     const Comm& comm) const {
+  return onEveryRank(layout_ && couplings == layout_->couplings, comm);
+}
+
+template <int Dim>
+void LayoutCache<Dim>::keep(LayoutKey<Dim> key, std::shared_ptr<const SystemLayout<Dim>> layout) {
+  ++(layout == layout_ ? reused_ : built_);
+  if (!enabled_)
+    return;
+  key_ = std::move(key);
+  layout_ = std::move(layout);
+}
+
+template <int Dim>
+std::shared_ptr<const SystemLayout<Dim>> layoutOf(const LayoutInputs<Dim>& in,
+                                                  LayoutCache<Dim>& cache) {
+  const Comm& comm = *in.ownership.comm();
+  std::vector<int> firstExtra;
+  std::vector<ExtraDof> extras;
+  auto key = keyOf(in.ownership, in.map, in.contributions, firstExtra, extras);
+  auto kept = cache.find(key, comm);
+  std::shared_ptr<SystemLayout<Dim>> fresh;
+  if (!kept)
+    fresh = numberUnknowns(in.ownership, in.map, firstExtra, key.touched, extras);
+  const SystemLayout<Dim>& unknowns = kept ? *kept : *fresh;
+  // The contributions' couplings, read against these unknowns.
+  std::vector<std::pair<GO, GO>> couplings;
+  for (std::size_t c = 0; c < in.contributions.size(); ++c)
+    in.contributions[c]->couplings(
+        ContributionContext<Dim>{in.ownership.grid(), in.particles, in.map, unknowns.entryDofs,
+                                 unknowns.dofs, in.time, in.loadFactor, unknowns.firstExtra[c]},
+        couplings);
+  for (GO padding : unknowns.dofs.paddingDofs())  // its row holds its diagonal only
+    couplings.emplace_back(padding, padding);
+  if (kept && cache.sameCouplings(couplings, comm)) {
+    cache.keep(std::move(key), kept);
+    return kept;
+  }
+  if (!fresh)
+    fresh = std::make_shared<SystemLayout<Dim>>(*kept);
+  fresh->couplings = std::move(couplings);
+  {
+    IMPM_TIMER("graph");
+    fresh->graph = buildGraph(in.map, fresh->entryDofs, fresh->dofs, fresh->couplings);
+  }
+  collectively(comm,
+               [&] { fresh->entryCols = impm::entryColumns(in.map, *fresh->graph->getColMap()); });
+  cache.keep(std::move(key), fresh);
+  return fresh;
+}
+
+template class LayoutCache<1>;
+template class LayoutCache<2>;
+template std::shared_ptr<const SystemLayout<1>> layoutOf(const LayoutInputs<1>&, LayoutCache<1>&);
+template std::shared_ptr<const SystemLayout<2>> layoutOf(const LayoutInputs<2>&, LayoutCache<2>&);
+
+}  // namespace impm

@@ -1,0 +1,99 @@
+#pragma once
+// The layout of a step's grid system: the unknowns (DofMap), the overlap index of every
+// particle-grid map entry, the graph with the column index of every entry, the importer
+// from the owned to the overlap unknowns and the nodal mask.  In updated-Lagrangian runs
+// building them is most of a step's set-up, yet they depend only on
+//   - the (particle, node) pairs of the map (its rows and their nodes, in order),
+//   - the nodes and extra unknowns the contributions add (Contribution::prepare),
+//   - the couplings the contributions add (Contribution::couplings),
+//   - the ownership of the nodes (a repartition changes it),
+// not on the weights phi_ip, G_ip.  A stepper keeps the last layout in a LayoutCache; the
+// next system takes it over when all of these are the same on every rank (no particle
+// entered or left a node's support, no migration reordered the particles), and builds a
+// new one otherwise.  A reused layout is identical to the one that would be built, so the
+// results do not change at all.
+
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "assembly/Kinematics.hpp"
+#include "core/DofMap.hpp"
+#include "solver/Contribution.hpp"
+
+namespace impm {
+
+template <int Dim>
+struct SystemLayout {
+  SystemLayout(std::vector<int> extras, DofMap<Dim> unknowns)
+      : firstExtra(std::move(extras)), dofs(std::move(unknowns)) {}
+
+  std::vector<int> firstExtra;  // each contribution's first extra unknown
+  DofMap<Dim> dofs;
+  EntryDofs<> entryDofs;  // overlap-map index of each map entry's node
+  Teuchos::RCP<const Import> importer;
+  Teuchos::RCP<const Vector> nodalMask;      // 1 on nodal unknowns, 0 on extra unknowns
+  std::vector<std::pair<GO, GO>> couplings;  // the contributions' and the padding's entries
+  Teuchos::RCP<FECrsGraph> graph;
+  EntryColumns<> entryCols;  // each component's index in the graph's column map
+};
+
+// What the unknowns are built from (the first three items above), on this rank.
+template <int Dim>
+struct LayoutKey {
+  const NodeOwnership<Dim>* ownership = nullptr;
+  int ownershipRevision = -1;
+  std::vector<std::size_t> rowPtr;   // the map's rows
+  std::vector<GlobalId> touched;     // the map's nodes, then the contributions'
+  std::vector<GlobalId> extraNodes;  // the anchor node of every extra unknown
+
+  bool operator==(const LayoutKey& o) const {
+    return ownership == o.ownership && ownershipRevision == o.ownershipRevision &&
+           rowPtr == o.rowPtr && touched == o.touched && extraNodes == o.extraNodes;
+  }
+};
+
+template <int Dim>
+class LayoutCache {
+ public:
+  explicit LayoutCache(bool enabled = true) : enabled_(enabled) {}
+
+  // The kept layout if `key` is the kept one on every rank, else null.  Collective.
+  std::shared_ptr<const SystemLayout<Dim>> find(const LayoutKey<Dim>& key, const Comm& comm) const;
+  // True if `couplings` are the kept layout's on every rank.  Collective.
+  bool sameCouplings(const std::vector<std::pair<GO, GO>>& couplings, const Comm& comm) const;
+  void keep(LayoutKey<Dim> key, std::shared_ptr<const SystemLayout<Dim>> layout);
+
+  bool enabled() const { return enabled_; }
+  int built() const { return built_; }
+  int reused() const { return reused_; }
+
+ private:
+  bool enabled_;
+  LayoutKey<Dim> key_;
+  std::shared_ptr<const SystemLayout<Dim>> layout_;
+  int built_ = 0, reused_ = 0;
+};
+
+template <int Dim>
+using Contributions = std::vector<std::shared_ptr<Contribution<Dim>>>;
+
+// What a step's system is built on.
+template <int Dim>
+struct LayoutInputs {
+  const NodeOwnership<Dim>& ownership;
+  const ParticleGridMap<Dim>& map;
+  const ParticleSet<Dim>& particles;
+  const Contributions<Dim>& contributions;
+  double time, loadFactor;  // for the contributions' context
+};
+
+// The layout of the system on `in.map`: the cache's when nothing it depends on changed,
+// otherwise a new one, which the cache keeps (a new graph only, when only the couplings
+// changed).  Calls every contribution's prepare().  Collective; NumericalError when a node
+// that a boundary condition reaches is reached by no integration point.
+template <int Dim>
+std::shared_ptr<const SystemLayout<Dim>> layoutOf(const LayoutInputs<Dim>& in,
+                                                  LayoutCache<Dim>& cache);
+
+}  // namespace impm
