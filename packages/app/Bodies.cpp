@@ -31,7 +31,7 @@ const std::vector<std::string>& variables() {
 
 // Values in the order of variables<Dim>().
 template <int Dim>
-std::vector<double> arguments(const double* x, const double* X, double t) {
+std::array<double, 2 * Dim + 1> arguments(const double* x, const double* X, double t) {
   static_assert(Dim == 1 || Dim == 2, "Bodies: the formula arguments of this dimension");
   if constexpr (Dim == 1)
     return {x[0], X[0], t};

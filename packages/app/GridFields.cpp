@@ -33,26 +33,34 @@ GridFields<Dim>::GridFields(const NodeOwnership<Dim>& ownership, bool displaceme
 
 template <int Dim>
 void GridFields<Dim>::update(const StepGrid<Dim>& step) {
-  if (velocity_ >= 0)
-    for (int c = velocity_; c <= mass_; ++c)
-      values_.getVectorNonConst(c)->putScalar(0.0);
+  // Every step (the displacement accumulates): local views and local node indices, not
+  // Tpetra's per-value global accessors, which cost as much as a residual evaluation.
+  auto out = values_.getLocalViewHost(Tpetra::Access::ReadWrite);
+  const auto& nodes = *values_.getMap();
   const auto& map = *step.du.getMap();
+  const auto& dofs = step.system.dofs();
   auto du = step.du.getData();
   Teuchos::ArrayRCP<const double> v, m;
   if (step.velocity)
     v = step.velocity->getData(), m = step.mass->getData();
+  if (velocity_ >= 0)
+    for (std::size_t n = 0; n < out.extent(0); ++n)
+      for (int c = velocity_; c <= mass_; ++c)
+        out(n, c) = 0.0;
   for (decltype(du.size()) k = 0; k < du.size(); ++k) {
     const GO dof = map.getGlobalElement(static_cast<LO>(k));
-    if (step.system.dofs().isExtraDof(dof))
+    if (dofs.isExtraDof(dof))
       continue;
-    const GO node = dof / Dim;
+    const LO node = nodes.getLocalElement(dof / Dim);
+    if (node == Teuchos::OrdinalTraits<LO>::invalid())
+      throw std::logic_error("grid output: an unknown's node is not on its rank");
     const int d = static_cast<int>(dof % Dim);
     if (displacement_ >= 0)
-      values_.sumIntoGlobalValue(node, displacement_ + d, du[k]);
+      out(node, displacement_ + d) += du[k];
     if (velocity_ >= 0 && step.velocity) {
-      values_.replaceGlobalValue(node, velocity_ + d, v[k]);
+      out(node, velocity_ + d) = v[k];
       if (d == 0)
-        values_.replaceGlobalValue(node, mass_, m[k]);
+        out(node, mass_) = m[k];
     }
   }
 }

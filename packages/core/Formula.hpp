@@ -3,6 +3,7 @@
 // variables (x, X, t, ...).  Evaluated on the host: formulas are read at set-up, once per
 // step or once per Newton iteration, never inside device kernels.
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -19,6 +20,10 @@ class Formula {
   // Values in the order of the variable names given at construction.
   double operator()(const std::vector<double>& values) const {
     return evaluate(values.data(), values.size());
+  }
+  template <std::size_t N>
+  double operator()(const std::array<double, N>& values) const {
+    return evaluate(values.data(), N);
   }
   double operator()(double v0) const { return evaluate(&v0, 1); }
   double operator()(double v0, double v1) const {

@@ -1,7 +1,6 @@
 #include "solver/DiagonalSolve.hpp"
 
-#include <Teuchos_SerialDenseMatrix.hpp>
-#include <Teuchos_SerialDenseSolver.hpp>
+#include <Teuchos_LAPACK.hpp>
 
 #include <sstream>
 
@@ -21,14 +20,17 @@ Vector unit(const Teuchos::RCP<const Map>& map, GO g) {
 
 }  // namespace
 
-void solveDiagonalWithExtras(const CrsMatrix& J, const Vector& nodal, const std::vector<GO>& extras,
-                             const Vector& b, Vector& x) {
-  const auto map = J.getRowMap();
-  // D^-1 on the nodal rows, 0 elsewhere.
-  Vector dinv(map);
-  J.getLocalDiagCopy(dinv);
+DiagonalElimination::DiagonalElimination(const CrsMatrix& J, const Vector& nodal,
+                                         const std::vector<GO>& extras)
+    : map_(J.getRowMap()),
+      extras_(extras),
+      nodal_(nodal, Teuchos::Copy),
+      dinv_(map_),
+      lu_(static_cast<int>(extras.size()), static_cast<int>(extras.size())),
+      pivots_(extras.size()) {
+  J.getLocalDiagCopy(dinv_);
   {
-    auto d = dinv.getLocalViewHost(Tpetra::Access::ReadWrite);
+    auto d = dinv_.getLocalViewHost(Tpetra::Access::ReadWrite);
     auto m = nodal.getLocalViewHost(Tpetra::Access::ReadOnly);
     for (std::size_t i = 0; i < d.extent(0); ++i) {
       if (m(i, 0) == 0.0) {
@@ -41,42 +43,47 @@ void solveDiagonalWithExtras(const CrsMatrix& J, const Vector& nodal, const std:
     }
   }
   const int n = static_cast<int>(extras.size());
-  std::vector<Vector> column, rowScaled;  // B_k (nodal part), D^-1 C_k^T
-  Teuchos::SerialDenseMatrix<int, double> S(n, n);
-  Teuchos::SerialDenseMatrix<int, double> rhs(n, 1), de(n, 1);
-  Vector bn(map);
-  bn.elementWiseMultiply(1.0, nodal, b, 0.0);
   for (int k = 0; k < n; ++k) {
-    const Vector e = unit(map, extras[k]);
-    Vector full(map), row(map);
+    const Vector e = unit(map_, extras[k]);
+    Vector full(map_), row(map_);
     J.apply(e, full);                 // column k of J
     J.apply(e, row, Teuchos::TRANS);  // row k of J
     for (int j = 0; j < n; ++j)
-      S(j, k) = unit(map, extras[j]).dot(full);  // E
-    column.emplace_back(map);
-    column.back().elementWiseMultiply(1.0, nodal, full, 0.0);
-    rowScaled.emplace_back(map);
-    rowScaled.back().elementWiseMultiply(1.0, dinv, row, 0.0);
-    rhs(k, 0) = e.dot(b) - rowScaled.back().dot(bn);
+      lu_(j, k) = unit(map_, extras[j]).dot(full);  // E
+    column_.emplace_back(map_);
+    column_.back().elementWiseMultiply(1.0, nodal, full, 0.0);
+    rowScaled_.emplace_back(map_);
+    rowScaled_.back().elementWiseMultiply(1.0, dinv_, row, 0.0);
   }
   for (int j = 0; j < n; ++j)
     for (int k = 0; k < n; ++k)
-      S(j, k) -= rowScaled[j].dot(column[k]);
-  if (n > 0) {
-    Teuchos::SerialDenseSolver<int, double> solver;
-    solver.setMatrix(Teuchos::rcpFromRef(S));
-    solver.setVectors(Teuchos::rcpFromRef(de), Teuchos::rcpFromRef(rhs));
-    if (solver.factor() != 0 || solver.solve() != 0)
-      throw NumericalError("the explicit update's boundary-force system is singular");
-  }
+      lu_(j, k) -= rowScaled_[j].dot(column_[k]);
+  int info = 0;
+  if (n > 0)
+    Teuchos::LAPACK<int, double>().GETRF(n, n, lu_.values(), lu_.stride(), pivots_.data(), &info);
+  if (info != 0)
+    throw NumericalError("the explicit update's boundary-force system is singular");
+}
+
+void DiagonalElimination::solve(const Vector& b, Vector& x) const {
+  // re - C D^-1 rn, then de from the factored reduced system.
+  const int n = static_cast<int>(extras_.size());
+  Vector bn(map_);
+  bn.elementWiseMultiply(1.0, nodal_, b, 0.0);
+  std::vector<double> de(n);
+  for (int k = 0; k < n; ++k)
+    de[k] = unit(map_, extras_[k]).dot(b) - rowScaled_[k].dot(bn);
+  int info = 0;
+  if (n > 0)
+    Teuchos::LAPACK<int, double>().GETRS('N', n, 1, lu_.values(), lu_.stride(), pivots_.data(),
+                                         de.data(), n, &info);
   // dn = D^-1 (bn - sum_k B_k de_k); the extras take de.
-  Vector rest(bn, Teuchos::Copy);
   for (int k = 0; k < n; ++k)
-    rest.update(-de(k, 0), column[k], 1.0);
-  x.elementWiseMultiply(1.0, dinv, rest, 0.0);
+    bn.update(-de[k], column_[k], 1.0);
+  x.elementWiseMultiply(1.0, dinv_, bn, 0.0);
   for (int k = 0; k < n; ++k)
-    if (map->isNodeGlobalElement(extras[k]))
-      x.replaceGlobalValue(extras[k], de(k, 0));
+    if (map_->isNodeGlobalElement(extras_[k]))
+      x.replaceGlobalValue(extras_[k], de[k]);
 }
 
 }  // namespace impm

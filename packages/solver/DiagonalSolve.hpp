@@ -12,16 +12,32 @@
 
 #include <vector>
 
+#include <Teuchos_SerialDenseMatrix.hpp>
+
 #include "core/TpetraTypes.hpp"
 
 namespace impm {
 
 // Solves J x = b for a J whose block on the unknowns where `nodal` is 1 is diagonal;
 // `extras` are the global indices of the other unknowns that take part (rows where `nodal`
-// is 0 and that are not extras, the padding unknown of an empty rank, get x = 0).
-// Collective.  Throws NumericalError when a nodal diagonal entry or the reduced system is
-// singular.
-void solveDiagonalWithExtras(const CrsMatrix& J, const Vector& nodal, const std::vector<GO>& extras,
-                             const Vector& b, Vector& x);
+// is 0 and that are not extras, the padding unknown of an empty rank, get x = 0).  The
+// elimination is done once, at construction; solve() is then two products and a division
+// per unknown, as many times as the matrix serves (an explicit run's fixed grid: every step).
+class DiagonalElimination {
+ public:
+  // Collective.  Throws NumericalError when a nodal diagonal entry or the reduced system is
+  // singular.
+  DiagonalElimination(const CrsMatrix& J, const Vector& nodal, const std::vector<GO>& extras);
+  // Collective.
+  void solve(const Vector& b, Vector& x) const;
+
+ private:
+  Teuchos::RCP<const Map> map_;
+  std::vector<GO> extras_;
+  Vector nodal_, dinv_;                         // the mask; D^-1 on the nodal rows, 0 elsewhere
+  std::vector<Vector> column_, rowScaled_;      // B_k (nodal part), D^-1 C_k^T
+  Teuchos::SerialDenseMatrix<int, double> lu_;  // E - C D^-1 B, factored
+  std::vector<int> pivots_;
+};
 
 }  // namespace impm

@@ -217,16 +217,15 @@ bool DynamicStepper<Dim>::solveStep(GridSystem<Dim>& system, const Acceleration&
   predictor.update(dt, v, 0.5 * dt * dt, a, 0.0);
   maskExtras(predictor, system.nodalMask());
   du->update(1.0, predictor, 1.0);
-  if (settings_.isExplicit())
-    if (const auto J = system.explicitJacobian())
-      return eliminate(system, *J, *du, report);
+  if (settings_.isExplicit() && system.hasDiagonalJacobian())
+    return eliminate(system, *du, report);
   return this->solve(system, *du, report);
 }
 
 // The explicit step with the lumped mass: R is affine in du, so du - J^-1 R(du) is its
 // solution, found by elimination (solver/DiagonalSolve) after one residual evaluation.
 template <int Dim>
-bool DynamicStepper<Dim>::eliminate(GridSystem<Dim>& system, const CrsMatrix& J, Vector& du,
+bool DynamicStepper<Dim>::eliminate(GridSystem<Dim>& system, Vector& du,
                                     NewtonReport& report) const {
   IMPM_TIMER("explicit update");
   Vector r(system.unknownMap()), step(system.unknownMap());
@@ -235,7 +234,7 @@ bool DynamicStepper<Dim>::eliminate(GridSystem<Dim>& system, const CrsMatrix& J,
     system.evaluate(du, &r, nullptr);
     report.residualNorms = {r.norm2()};
     r.scale(-1.0);
-    solveDiagonalWithExtras(J, system.nodalMask(), system.extraDofs(), r, step);
+    system.explicitElimination().solve(r, step);
   } catch (const NumericalError& e) {
     report.failure = e.what();
     return false;
@@ -303,7 +302,9 @@ void DynamicStepper<Dim>::run(const StepCallback<Dim>& onStep) {
     auto system = systemAt(t + h);
     if (fixedGrid_ && !u_)
       state.started ? restoreNodalState(*system) : startFixedGrid(*system);
-    auto mass = system->lumpedMass();
+    if (!fixedGrid_ || !mass_)  // a fixed grid's particles keep their masses and nodes
+      mass_ = system->lumpedMass();
+    const auto mass = mass_;
     Teuchos::RCP<Vector> v, a;
     gridVelocityAndAcceleration(*system, *mass, v, a);
     if (!state.started && !settings_.isExplicit() && settings_.equilibriumInitialAcceleration)

@@ -68,8 +68,7 @@ class DynamicStepper : public Stepper<Dim> {
   bool solveStep(GridSystem<Dim>& system, const Acceleration& s, const Vector& v, const Vector& a,
                  double dt, Teuchos::RCP<Vector>& du, NewtonReport& report);
   // The explicit step with the lumped mass: du -= J^-1 R(du) by elimination, no Krylov solve.
-  bool eliminate(GridSystem<Dim>& system, const CrsMatrix& J, Vector& du,
-                 NewtonReport& report) const;
+  bool eliminate(GridSystem<Dim>& system, Vector& du, NewtonReport& report) const;
   // The integrator's new grid acceleration and velocity after a step du of size h.
   void integrate(const GridSystem<Dim>& system, const Acceleration& s, double h, const Vector& du,
                  const Vector& v, const Vector& a, Teuchos::RCP<Vector>& vNew,
@@ -83,7 +82,8 @@ class DynamicStepper : public Stepper<Dim> {
   DynamicSettings settings_;
   bool fixedGrid_;
   Teuchos::RCP<GridSystem<Dim>> fixedSystem_;
-  Teuchos::RCP<Vector> u_, v_, a_;  // nodal state of a fixed grid
+  Teuchos::RCP<Vector> u_, v_, a_;   // nodal state of a fixed grid
+  Teuchos::RCP<const Vector> mass_;  // the step's lumped mass (a fixed grid's, kept)
 };
 
 }  // namespace impm

@@ -335,13 +335,19 @@ bool GridSystem<Dim>::isLinear() const {
 }
 
 template <int Dim>
-Teuchos::RCP<CrsMatrix> GridSystem<Dim>::explicitJacobian() {
-  if (!frozen_ || inertia_.mass != MassType::lumped || !inertia_.r)
-    return Teuchos::null;
-  if (explicitJacobian_.is_null())  // kept: a fixed grid's system serves every step
-    explicitJacobian_ = createJacobian();
-  evaluate(Vector(unknownMap()), nullptr, explicitJacobian_.get());  // affine: any du will do
-  return explicitJacobian_;
+bool GridSystem<Dim>::hasDiagonalJacobian() const {
+  return frozen_ && inertia_.mass == MassType::lumped && inertia_.r;
+}
+
+template <int Dim>
+const DiagonalElimination& GridSystem<Dim>::explicitElimination() {
+  if (!explicitElimination_ || explicitC0_ != inertia_.c0) {
+    auto J = createJacobian();
+    evaluate(Vector(unknownMap()), nullptr, J.get());  // affine: any du will do
+    explicitElimination_ = std::make_unique<DiagonalElimination>(*J, nodalMask(), extraDofs());
+    explicitC0_ = inertia_.c0;
+  }
+  return *explicitElimination_;
 }
 
 template <int Dim>

@@ -18,6 +18,7 @@
 #include "basis/Method.hpp"
 #include "material/MaterialState.hpp"
 #include "solver/Contribution.hpp"
+#include "solver/DiagonalSolve.hpp"
 #include "solver/ResidualModel.hpp"
 #include "solver/StepWorkspace.hpp"
 #include "solver/SystemLayout.hpp"
@@ -66,10 +67,13 @@ class GridSystem : public ResidualModel {
   bool isLinear() const override;
   // Explicit steps with the lumped mass: the Jacobian's nodal block is diagonal (the lumped
   // mass times c0, the constraint scale on constrained rows) and the extra unknowns couple to
-  // it through their rows and columns only, so the step needs no Krylov solve
-  // (solver/DiagonalSolve).  Returns the assembled Jacobian, or null when the step is not
-  // such (implicit steps, the consistent mass).  Collective.
-  Teuchos::RCP<CrsMatrix> explicitJacobian();
+  // it through their rows and columns only, so the step needs no Krylov solve.
+  bool hasDiagonalJacobian() const;
+  // Then: the Jacobian's elimination (solver/DiagonalSolve), kept while c0 stays the same:
+  // the rest of that Jacobian (the particles' masses, the constrained rows, the Robin ends'
+  // alpha, beta and support) does not change while a system lives.  Collective;
+  // NumericalError when the Jacobian is not finite or the elimination singular.
+  const DiagonalElimination& explicitElimination();
   // The global indices of the extra unknowns (Robin end forces), the same on every rank.
   std::vector<GO> extraDofs() const;
   Teuchos::RCP<CrsMatrix> createJacobian() const override;
@@ -123,7 +127,8 @@ class GridSystem : public ResidualModel {
   // "grid node 12 at x = (0.5, 0.25), component y", or the extra unknown it is.
   std::string unknownLabel(GO dof) const;
 
-  Teuchos::RCP<CrsMatrix> explicitJacobian_;  // the explicit steps' matrix, refilled
+  std::unique_ptr<DiagonalElimination> explicitElimination_;
+  double explicitC0_ = 0.0;  // the c0 it was made with
   const GridGeometry<Dim> grid_;
   Kinematics kinematics_;
   const ParticleSet<Dim>& particles_;
