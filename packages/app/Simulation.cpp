@@ -4,6 +4,7 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -256,14 +257,17 @@ OperatorKind Simulation<Dim>::operatorKind() const {
     return OperatorKind::small;
   const auto& ti = deck_.sublist("Time Integration");
   const auto& type = ti.get<std::string>("Type");
-  if (type == "static")
-    return OperatorKind::stiffness;
   if (type == "explicit")
     return OperatorKind::massDominated;
-  const double transit =
-      DynamicStepper<Dim>::stableTimeStep(ownership_->grid(), particles_, materials_, *comm_);
-  return ti.get<double>("Time Step") <= 2.0 * transit ? OperatorKind::massDominated
-                                                      : OperatorKind::stiffness;
+  if (type != "static") {
+    const double transit =
+        DynamicStepper<Dim>::stableTimeStep(ownership_->grid(), particles_, materials_, *comm_);
+    if (ti.get<double>("Time Step") <= 2.0 * transit)
+      return OperatorKind::massDominated;
+  }
+  const bool symmetric = std::all_of(materials_.begin(), materials_.end(),
+                                     [](const auto& m) { return m->hasSymmetricTangent(); });
+  return symmetric ? OperatorKind::symmetricStiffness : OperatorKind::stiffness;
 }
 
 template <int Dim>

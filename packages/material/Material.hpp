@@ -91,6 +91,9 @@ class Material {
 
   // True when P is affine in F (then a total-Lagrangian, or 1-D, step is a linear system).
   virtual bool isLinear() const { return false; }
+  // True when the tangent has major symmetry, A_iJkL = A_kLiJ, as every hyperelastic law's
+  // (P = dW/dF): the 2-D stiffness is then symmetric and CG solves it.
+  virtual bool hasSymmetricTangent() const { return false; }
 
   // Largest small-strain modulus over this material's particles (for wave speeds).
   virtual double maxModulus(const Evaluation& at) const = 0;

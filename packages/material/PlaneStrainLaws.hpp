@@ -137,6 +137,7 @@ class PlaneStrainLaw : public Material<2> {
     return lame_.lambda + 2.0 * lame_.mu;  // P-wave modulus: c = sqrt((lambda + 2 mu) / rho)
   }
   bool isLinear() const override { return Law::linear; }
+  bool hasSymmetricTangent() const override { return true; }  // hyperelastic
 
  private:
   Lame lame_;

@@ -217,6 +217,7 @@ bool DynamicStepper<Dim>::solveStep(GridSystem<Dim>& system, const Acceleration&
   predictor.update(dt, v, 0.5 * dt * dt, a, 0.0);
   maskExtras(predictor, system.nodalMask());
   du->update(1.0, predictor, 1.0);
+  system.imposeConstraints(*du);
   if (settings_.isExplicit() && system.hasDiagonalJacobian())
     return eliminate(system, *du, report);
   return this->solve(system, *du, report);

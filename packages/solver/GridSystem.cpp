@@ -107,35 +107,54 @@ template <int Dim>
 void GridSystem<Dim>::applyConstraints(const Vector& x, Vector* residual,
                                        CrsMatrix* jacobian) const {
   const auto rows = constrainedRows();
-  if (rows.empty())
-    return;
   if (residual) {
     auto r = residual->getLocalViewHost(Tpetra::Access::ReadWrite);
     auto xv = x.getLocalViewHost(Tpetra::Access::ReadOnly);
     for (const auto& [lid, value] : rows)
       r(lid, 0) = constraintScale_ * (xv(lid, 0) - value);
   }
-  if (jacobian) {
-    // Row lid becomes scale * e_lid: the graph stays, the values of the row change.
-    const auto& cols = *jacobian->getColMap();
-    const auto& owned = *dofs_.ownedMap();
-    Kokkos::View<LO* [2]> rowCol("constrained rows", rows.size());  // row, column of e_row
-    auto host = Kokkos::create_mirror_view(rowCol);
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-      host(i, 0) = rows[i].first;
-      host(i, 1) = cols.getLocalElement(owned.getGlobalElement(rows[i].first));
-    }
-    Kokkos::deep_copy(rowCol, host);
-    auto K = jacobian->getLocalMatrixDevice();
-    const double scale = constraintScale_;
-    Kokkos::parallel_for(
-        "impm::constrainRows", RangePolicy<DefaultExecSpace>(0, rows.size()),
-        KOKKOS_LAMBDA(const int i) {
-          auto row = K.row(rowCol(i, 0));
-          for (LO k = 0; k < row.length; ++k)
-            row.value(k) = row.colidx(k) == rowCol(i, 1) ? scale : 0.0;
-        });
+  if (jacobian)
+    eliminateConstrained(rows, *jacobian);
+}
+
+template <int Dim>
+void GridSystem<Dim>::eliminateConstrained(const std::vector<std::pair<LO, double>>& rows,
+                                           CrsMatrix& J) const {
+  // Mark the prescribed unknowns on the rows and bring the marks to the columns (collective:
+  // a rank without prescribed rows may hold their columns).
+  Vector marks(J.getRowMap()), atColumns(J.getColMap());
+  {
+    auto m = marks.getLocalViewHost(Tpetra::Access::ReadWrite);
+    for (const auto& row : rows)
+      m(row.first, 0) = 1.0;
   }
+  if (const auto importer = J.getGraph()->getImporter(); importer.is_null())
+    Tpetra::deep_copy(atColumns, marks);  // the column map is the row map
+  else
+    atColumns.doImport(marks, *importer, Tpetra::INSERT);
+  auto K = J.getLocalMatrixDevice();
+  const auto rowMap = J.getRowMap()->getLocalMap(), colMap = J.getColMap()->getLocalMap();
+  const auto fixedRow = marks.getLocalViewDevice(Tpetra::Access::ReadOnly);
+  const auto fixedCol = atColumns.getLocalViewDevice(Tpetra::Access::ReadOnly);
+  const double scale = constraintScale_;
+  Kokkos::parallel_for(
+      "impm::eliminateConstrained", RangePolicy<DefaultExecSpace>(0, K.numRows()),
+      KOKKOS_LAMBDA(const LO r) {
+        auto row = K.row(r);
+        const LO diagonal = colMap.getLocalElement(rowMap.getGlobalElement(r));
+        for (LO k = 0; k < row.length; ++k)
+          if (fixedRow(r, 0) != 0.0)
+            row.value(k) = row.colidx(k) == diagonal ? scale : 0.0;
+          else if (fixedCol(row.colidx(k), 0) != 0.0)
+            row.value(k) = 0.0;
+      });
+}
+
+template <int Dim>
+void GridSystem<Dim>::imposeConstraints(Vector& x) const {
+  auto values = x.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (const auto& [lid, value] : constrainedRows())
+    values(lid, 0) = value;
 }
 
 template <int Dim>
@@ -161,9 +180,7 @@ Teuchos::RCP<Vector> GridSystem<Dim>::initialGuess() const {
   auto x = Teuchos::rcp(new Vector(dofs_.ownedMap()));
   for (std::size_t c = 0; c < contributions_.size(); ++c)
     contributions_[c]->initialGuess(context(static_cast<int>(c)), *x);
-  auto values = x->getLocalViewHost(Tpetra::Access::ReadWrite);
-  for (const auto& [lid, value] : constrainedRows())
-    values(lid, 0) = value;
+  imposeConstraints(*x);
   return x;
 }
 

@@ -81,8 +81,12 @@ class GridSystem : public ResidualModel {
   Teuchos::RCP<MultiVector> nearNullSpace() const override;
   void evaluate(const Vector& x, Vector* residual, CrsMatrix* jacobian) override;
 
-  // A zero increment with the contributions' guesses for their extra unknowns.
+  // A zero increment with the contributions' guesses for their extra unknowns and the
+  // prescribed increments.
   Teuchos::RCP<Vector> initialGuess() const;
+  // Sets the prescribed unknowns of x to their prescribed increments (a guess must meet them,
+  // see eliminateConstrained).
+  void imposeConstraints(Vector& x) const;
   // Overlap values of an owned vector.
   Teuchos::RCP<Vector> toOverlap(const Vector& owned) const;
   // The step converged at x: the contributions and the materials commit their state (after
@@ -117,6 +121,12 @@ class GridSystem : public ResidualModel {
   std::vector<std::pair<LO, double>> constrainedRows() const;
   // Rows of prescribed unknowns: residual scale (x_i - value), Jacobian row scale e_i.
   void applyConstraints(const Vector& x, Vector* residual, CrsMatrix* jacobian) const;
+  // The rows of prescribed unknowns become scale e_i and their columns are zeroed elsewhere,
+  // so that a symmetric tangent stays symmetric (for CG).  Exact for iterates that meet the
+  // constraints (imposeConstraints), as Newton's do from the guess on: the increments of
+  // prescribed unknowns are then zero, and so are the products with their columns.
+  // Collective.
+  void eliminateConstrained(const std::vector<std::pair<LO, double>>& rows, CrsMatrix& J) const;
   // NumericalError naming the first particle whose trial stress or tangent is NaN or
   // infinite (local).
   void requireFiniteStress() const;

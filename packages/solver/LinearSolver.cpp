@@ -118,6 +118,10 @@ Teuchos::ParameterList defaultLinearSolverParameters(OperatorKind kind, int dim,
       belos(p, "Pseudo Block GMRES").set("Num Blocks", 200);
       smoothedAggregation(p, dim, ranks);
       break;
+    case OperatorKind::symmetricStiffness:
+      belos(p, "Pseudo Block CG");
+      smoothedAggregation(p, dim, ranks);
+      break;
     case OperatorKind::massDominated:
       belos(p, "Pseudo Block CG");
       jacobi(p);

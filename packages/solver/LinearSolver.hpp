@@ -8,10 +8,11 @@
 //     nodes: GMRES + ILUT (close to an exact factorisation of a banded matrix, right with
 //     the boundary-force unknowns and with nodes that barely touch a body);
 //   - stiffness-dominated operators in 2-D (static steps, Newmark with time steps beyond
-//     twice the wave transit time of a cell): GMRES + MueLu smoothed aggregation, Dim
-//     unknowns per node, the rigid-body modes as near-null space, symmetric Gauss-Seidel
-//     smoothing, a direct coarse
-//     solve on one rank and an iterative one on several (Amesos2 KLU2 is wrong there);
+//     twice the wave transit time of a cell): MueLu smoothed aggregation, Dim unknowns per
+//     node, the rigid-body modes as near-null space, symmetric Gauss-Seidel smoothing, a
+//     direct coarse solve on one rank and an iterative one on several (Amesos2 KLU2 is wrong
+//     there); with CG when every material's tangent is symmetric (hyperelastic laws: the
+//     prescribed unknowns are eliminated symmetrically), GMRES otherwise (plasticity);
 //   - mass-dominated operators (explicit steps, Newmark with short time steps: M/(beta dt^2)
 //     outweighs K): CG + Jacobi, no factorisation.
 
@@ -22,7 +23,7 @@
 
 namespace impm {
 
-enum class OperatorKind { small, stiffness, massDominated };
+enum class OperatorKind { small, stiffness, symmetricStiffness, massDominated };
 
 // impm's default Stratimikos list for an operator of that kind on `ranks` ranks.
 Teuchos::ParameterList defaultLinearSolverParameters(OperatorKind kind, int dim, int ranks);

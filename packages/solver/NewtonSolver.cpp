@@ -218,7 +218,9 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList& params,
   // systems of nodes that barely touch a body a stale one can stall Newton.  Without reuse
   // the strategy builds a preconditioner for every linear solve.
   const auto& reuse = params.get<std::string>("Preconditioner Reuse");
-  const bool reuseOn = reuse == "on" || (reuse == "auto" && kind == OperatorKind::stiffness);
+  const bool stiffness =
+      kind == OperatorKind::stiffness || kind == OperatorKind::symmetricStiffness;
+  const bool reuseOn = reuse == "on" || (reuse == "auto" && stiffness);
   if (auto inner = lows_->getPreconditionerFactory(); reuseOn && !inner.is_null()) {
     ReuseRules rules;
     rules.rebuildFactor = params.get<double>("Rebuild Factor");

@@ -4,9 +4,9 @@ with linear-elastic E = 1 MPa, nu = 0, 2 x 2 particles per cell, 10 load steps, 
 linear solvers side by side on 1 and 2 ranks.
 
 The grid is NX cells wide and NY tall over the height 50, so the column is 50 NX / NY wide.
-Configurations: impm's default for 2-D static steps (GMRES + MueLu smoothed aggregation
-with preconditioner reuse), the same without reuse, Ifpack2 ILUT (the 1-D default), and the
-deck's own additive Schwarz with a KLU2 LU per rank.  Records the wall time of the whole run
+Configurations: impm's default for 2-D static steps (CG + MueLu smoothed aggregation
+with preconditioner reuse), the same without reuse, the same with GMRES, Ifpack2 ILUT (the
+1-D default), and the deck's own additive Schwarz with a KLU2 LU per rank.  Records the wall time of the whole run
 (median of --repeat runs, configurations alternating), the Newton solve time, Krylov
 iterations per load step, peak memory (largest process) and per particle, and the RMS
 displacement error against the deck's neo-Hookean exact solution (linear elasticity differs
@@ -27,6 +27,8 @@ LS = "Solver/Linear Solver/"
 CONFIGS = {
     "default": [LS + "Preconditioner Type=MueLu"],
     "default, no reuse": [LS + "Preconditioner Type=MueLu", "Solver/Preconditioner Reuse=off"],
+    "default with GMRES": [LS + "Preconditioner Type=MueLu",
+                           LS + "Linear Solver Types/Belos/Solver Type=Pseudo Block GMRES"],
     "ILUT": [LS + "Preconditioner Types/Ifpack2/Prec Type=ILUT"],
     "Schwarz KLU2": [],
 }
