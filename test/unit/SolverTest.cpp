@@ -179,10 +179,26 @@ TEST(LinearSolver, DefaultGmresWithIlut) {
 // Jacobi) solve it too, on any number of ranks (MueLu's coarse solve is iterative there).
 TEST(LinearSolver, DefaultOfEveryKindSolves) {
   auto comm = Teuchos::DefaultComm<int>::getComm();
-  for (auto kind : {OperatorKind::stiffness, OperatorKind::massDominated}) {
+  for (auto kind :
+       {OperatorKind::stiffness, OperatorKind::symmetricStiffness, OperatorKind::massDominated}) {
     auto p = defaultLinearSolverParameters(kind, 1, comm->getSize());
     expectSolvesFull(p);
   }
+}
+
+// Stiffness: CG where the tangent is symmetric, GMRES where it may not be; MueLu for both.
+TEST(LinearSolver, CgOnlyForSymmetricStiffness) {
+  const auto method = [](OperatorKind kind) {
+    return defaultLinearSolverParameters(kind, 2, 1)
+        .sublist("Linear Solver Types")
+        .sublist("Belos")
+        .get<std::string>("Solver Type");
+  };
+  EXPECT_EQ(method(OperatorKind::symmetricStiffness), "Pseudo Block CG");
+  EXPECT_EQ(method(OperatorKind::stiffness), "Pseudo Block GMRES");
+  for (auto kind : {OperatorKind::stiffness, OperatorKind::symmetricStiffness})
+    EXPECT_EQ(defaultLinearSolverParameters(kind, 2, 1).get<std::string>("Preconditioner Type"),
+              "MueLu");
 }
 
 // A deck list that configures one preconditioner without naming it selects it.
