@@ -12,8 +12,9 @@
 //     first solve after the last build (at least `Minimum Iterations`);
 //   - otherwise the preconditioner built from an earlier Jacobian stays: the Krylov solve
 //     still solves the current Jacobian to its tolerance, so only the cost changes.
-// With MueLu, a rebuild on unchanged unknowns keeps the aggregates and the prolongator
-// (MueLu's "reuse: type" RP) and recomputes the coarse operators and smoothers; new unknowns
+// With MueLu, a rebuild on unchanged unknowns keeps the aggregates and the tentative
+// prolongator (MueLu's "reuse: type" tP) and recomputes the smoothed prolongator, the coarse
+// operators and the smoothers; new unknowns
 // start the hierarchy over, with the rigid-body modes of the new nodes as near-null space.
 
 #include <functional>
