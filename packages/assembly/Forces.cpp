@@ -1,5 +1,7 @@
 #include "assembly/Forces.hpp"
 
+#include "assembly/RowAccumulator.hpp"
+
 namespace impm {
 
 template <int Dim, class Space>
@@ -49,23 +51,28 @@ void addTangent(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& 
   Kokkos::parallel_for(
       "impm::tangent", RangePolicy<Space>(0, map.numParticles()), KOKKOS_LAMBDA(const int p) {
         const double w = section(p) * volume(p);
-        for (std::size_t ki = rowPtr(p); ki < rowPtr(p + 1); ++ki)
-          for (int a = 0; a < Dim; ++a) {
-            const LO row = entryRows(ki) + a;
-            for (std::size_t kj = rowPtr(p); kj < rowPtr(p + 1); ++kj) {
-              LO cols[Dim];
-              double vals[Dim];
-              for (int c = 0; c < Dim; ++c) {
+        for (std::size_t ki = rowPtr(p); ki < rowPtr(p + 1); ++ki) {
+          // wGA_acd = w sum_b G_ipb A^n_abcd, once per node i instead of once per pair (i, j)
+          double wGA[Dim][Dim][Dim];
+          for (int a = 0; a < Dim; ++a)
+            for (int c = 0; c < Dim; ++c)
+              for (int d = 0; d < Dim; ++d) {
                 double s = 0;
                 for (int b = 0; b < Dim; ++b)
-                  for (int d = 0; d < Dim; ++d)
-                    s += grad(ki, b) * An(p, a, b, c, d) * grad(kj, d);
-                cols[c] = entryCols(kj, c);
-                vals[c] = w * s;
+                  s += grad(ki, b) * An(p, a, b, c, d);
+                wGA[a][c][d] = w * s;
               }
-              K.sumIntoValues(row, cols, Dim, vals, false, true);
-            }
+          for (int a = 0; a < Dim; ++a) {
+            RowAccumulator<LocalMatrix> row(K, entryRows(ki) + a);
+            for (std::size_t kj = rowPtr(p); kj < rowPtr(p + 1); ++kj)
+              for (int c = 0; c < Dim; ++c) {
+                double s = 0;
+                for (int d = 0; d < Dim; ++d)
+                  s += wGA[a][c][d] * grad(kj, d);
+                row.add(entryCols(kj, c), s);
+              }
           }
+        }
       });
 }
 

@@ -1,5 +1,7 @@
 #include "assembly/Mass.hpp"
 
+#include "assembly/RowAccumulator.hpp"
+
 namespace impm {
 
 template <int Dim, class Space>
@@ -73,11 +75,9 @@ void addMassMatrix(MassType type, double scale, const ParticleGridMap<Dim, Space
               K.sumIntoValues(row, &col, 1, &value, false, true);
               continue;
             }
-            for (std::size_t kj = rowPtr(p); kj < rowPtr(p + 1); ++kj) {
-              const LO col = entryCols(kj, d);
-              const double value = scale * mass(p) * phi(ki) * phi(kj);
-              K.sumIntoValues(row, &col, 1, &value, false, true);
-            }
+            RowAccumulator<LocalMatrix> sum(K, row);
+            for (std::size_t kj = rowPtr(p); kj < rowPtr(p + 1); ++kj)
+              sum.add(entryCols(kj, d), scale * mass(p) * phi(ki) * phi(kj));
           }
       });
 }

@@ -6,6 +6,7 @@
 #include "assembly/Forces.hpp"
 #include "assembly/Mass.hpp"
 #include "assembly/ParticleUpdate.hpp"
+#include "assembly/RowAccumulator.hpp"
 #include "basis/Method.hpp"
 
 namespace impm {
@@ -161,6 +162,42 @@ TEST(GridToParticle, FlipAddsTheChangePicTakesTheField) {
   v = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), f.ps.v);
   for (int p = 0; p < 6; ++p)
     EXPECT_NEAR(v(p, 0), 0.75, 1e-14);
+}
+
+// The accumulator must add exactly what KokkosSparse's own search adds, whatever the order
+// of the columns: increasing (the fast path), decreasing (wrapping around every time),
+// repeated, and absent from the row (ignored).
+TEST(RowAccumulator, AddsWhatSumIntoValuesAddsInAnyColumnOrder) {
+  using Matrix = KokkosSparse::CrsMatrix<double, int, Kokkos::DefaultHostExecutionSpace>;
+  const int rowMap[] = {0, 4, 7};  // row 0: columns 1 3 4 8; row 1: columns 0 2 5
+  const int columns[] = {1, 3, 4, 8, 0, 2, 5};
+  auto fresh = [&] {
+    typename Matrix::row_map_type::non_const_type ptr("ptr", 3);
+    typename Matrix::index_type::non_const_type col("col", 7);
+    typename Matrix::values_type::non_const_type values("values", 7);
+    for (int i = 0; i < 3; ++i)
+      ptr(i) = rowMap[i];
+    for (int i = 0; i < 7; ++i)
+      col(i) = columns[i];
+    return Matrix("K", 2, 9, 7, values, ptr, col);
+  };
+  const std::vector<std::pair<int, double>> adds = {{1, 1.0},   {3, 2.0},  {8, 4.0},  {4, 8.0},
+                                                    {1, 16.0},  {7, 32.0}, {8, 64.0}, {1, 128.0},
+                                                    {5, 256.0}, {0, 512.0}};
+  Matrix expected = fresh(), actual = fresh();
+  for (int row = 0; row < 2; ++row) {
+    RowAccumulator<Matrix> sum(actual, row);
+    for (const auto& [c, v] : adds) {
+      const double value = v * (row + 1);
+      expected.sumIntoValues(row, &c, 1, &value, false, false);
+      sum.add(c, value);
+    }
+  }
+  for (int k = 0; k < 7; ++k)
+    EXPECT_EQ(actual.values(k), expected.values(k)) << "entry " << k;
+  EXPECT_EQ(actual.values(0), 145.0);   // column 1 of row 0: 1 + 16 + 128
+  EXPECT_EQ(actual.values(2), 8.0);     // column 4; column 7 is not in the row
+  EXPECT_EQ(actual.values(4), 1024.0);  // row 1, column 0, after column 5
 }
 
 }  // namespace
