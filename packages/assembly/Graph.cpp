@@ -5,70 +5,103 @@
 #include "core/Errors.hpp"
 
 namespace impm {
+namespace {
+
+// The local columns of every row of the overlap map, from the particle-grid map and the
+// extra couplings.  Node couplings are kept once per node, in one flat array, and expanded
+// into a row's DOF columns when asked for.
+template <int Dim>
+class RowColumns {
+ public:
+  RowColumns(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryDofs,
+             const Map& overlap, const std::vector<std::pair<GO, GO>>& extraCouplings)
+      : numRows_(overlap.getNodeNumElements()),
+        nodeStart_(numRows_ + 1, 0),
+        nodeOfRow_(numRows_, -1),
+        extra_(numRows_) {
+    coupleNodes(map, entryDofs);
+    for (std::size_t r = 0; r < numRows_; ++r)
+      if (nodeStart_[r + 1] > nodeStart_[r])
+        for (int a = 0; a < Dim; ++a)
+          nodeOfRow_[r + a] = static_cast<LO>(r);  // a node's rows follow its first DOF
+    for (const auto& [row, col] : extraCouplings) {
+      const LO r = overlap.getLocalElement(row), c = overlap.getLocalElement(col);
+      if (r == Teuchos::OrdinalTraits<LO>::invalid() || c == Teuchos::OrdinalTraits<LO>::invalid())
+        throw std::logic_error("boundary coupling outside the overlap map");
+      extra_[r].push_back(c);
+    }
+  }
+
+  std::size_t numRows() const { return numRows_; }
+
+  // Row r's columns, sorted and unique (valid until the next call).
+  const std::vector<LO>& operator()(std::size_t r) {
+    cols_.clear();
+    if (const LO node = nodeOfRow_[r]; node >= 0)
+      for (std::size_t q = nodeStart_[node]; q < nodeStart_[node + 1]; ++q)
+        for (int b = 0; b < Dim; ++b)
+          cols_.push_back(nodeColumns_[q] + b);  // sorted: nodes' DOF ranges do not overlap
+    if (!extra_[r].empty()) {
+      cols_.insert(cols_.end(), extra_[r].begin(), extra_[r].end());
+      std::sort(cols_.begin(), cols_.end());
+      cols_.erase(std::unique(cols_.begin(), cols_.end()), cols_.end());
+    }
+    return cols_;
+  }
+
+ private:
+  // For the node whose first DOF is r: the first DOFs of every node sharing a particle with
+  // it, sorted, at nodeColumns_[nodeStart_[r] ...].  Through the transpose of Y (the
+  // particles touching each node); a node already listed for r is marked with r, so only
+  // the unique ones are sorted.
+  void coupleNodes(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryDofs) {
+    auto rowPtr = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), map.rowPtr);
+    auto lid = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), entryDofs);
+    std::vector<std::size_t> start(numRows_ + 1, 0);
+    for (std::size_t k = 0; k < lid.extent(0); ++k)
+      ++start[lid(k) + 1];
+    for (std::size_t r = 0; r < numRows_; ++r)
+      start[r + 1] += start[r];
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    std::vector<std::size_t> particlesOf(start.back());
+    for (std::size_t p = 0; p < map.numParticles(); ++p)
+      for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k)
+        particlesOf[fill[lid(k)]++] = p;
+
+    nodeColumns_.reserve(start.back() * 2);
+    std::vector<std::size_t> listedFor(numRows_, numRows_);
+    for (std::size_t r = 0; r < numRows_; ++r) {
+      const std::size_t first = nodeColumns_.size();
+      for (std::size_t q = start[r]; q < start[r + 1]; ++q)
+        for (std::size_t k = rowPtr(particlesOf[q]); k < rowPtr(particlesOf[q] + 1); ++k)
+          if (listedFor[lid(k)] != r) {
+            listedFor[lid(k)] = r;
+            nodeColumns_.push_back(lid(k));
+          }
+      std::sort(nodeColumns_.begin() + first, nodeColumns_.end());
+      nodeStart_[r + 1] = nodeColumns_.size();
+    }
+  }
+
+  std::size_t numRows_;
+  std::vector<std::size_t> nodeStart_;
+  std::vector<LO> nodeColumns_;
+  std::vector<LO> nodeOfRow_;
+  std::vector<std::vector<LO>> extra_;
+  std::vector<LO> cols_;
+};
+
+}  // namespace
 
 template <int Dim>
 Teuchos::RCP<FECrsGraph> buildGraph(const ParticleGridMap<Dim>& map,
                                     const Kokkos::View<LO*>& entryDofs, const DofMap<Dim>& dofs,
                                     const std::vector<std::pair<GO, GO>>& extraCouplings) {
   const auto& overlap = *dofs.overlapMap();
-  const std::size_t numRows = overlap.getNodeNumElements();
-  auto rowPtr = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), map.rowPtr);
-  auto lid = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), entryDofs);
-  const std::size_t numParticles = map.numParticles();
-
-  // Transpose of Y: the particles touching each node (indexed by the node's first DOF).
-  std::vector<std::size_t> start(numRows + 1, 0);
-  for (std::size_t k = 0; k < lid.extent(0); ++k)
-    ++start[lid(k) + 1];
-  for (std::size_t r = 0; r < numRows; ++r)
-    start[r + 1] += start[r];
-  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-  std::vector<std::size_t> particlesOf(start.back());
-  for (std::size_t p = 0; p < numParticles; ++p)
-    for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k)
-      particlesOf[fill[lid(k)]++] = p;
-
-  // Extra couplings, in local indices, grouped by row.
-  std::vector<std::vector<LO>> extra(numRows);
-  for (const auto& [row, col] : extraCouplings) {
-    const LO r = overlap.getLocalElement(row), c = overlap.getLocalElement(col);
-    if (r == Teuchos::OrdinalTraits<LO>::invalid() || c == Teuchos::OrdinalTraits<LO>::invalid())
-      throw std::logic_error("boundary coupling outside the overlap map");
-    extra[r].push_back(c);
-  }
-
-  // Columns of every row: the DOFs of every node sharing a particle, plus extras.
-  std::vector<std::vector<LO>> columns(numRows);
-  std::vector<LO> nodes;
-  for (std::size_t r = 0; r < numRows; ++r) {
-    if (start[r + 1] > start[r]) {  // r is the first DOF of a node that particles touch
-      nodes.clear();
-      for (std::size_t q = start[r]; q < start[r + 1]; ++q) {
-        const std::size_t p = particlesOf[q];
-        for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k)
-          nodes.push_back(lid(k));
-      }
-      std::sort(nodes.begin(), nodes.end());
-      nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-      for (int a = 0; a < Dim; ++a) {
-        auto& cols = columns[r + a];
-        cols.reserve(nodes.size() * Dim);
-        for (LO node : nodes)
-          for (int b = 0; b < Dim; ++b)
-            cols.push_back(node + b);
-      }
-    }
-  }
-  for (std::size_t r = 0; r < numRows; ++r) {
-    auto& cols = columns[r];
-    cols.insert(cols.end(), extra[r].begin(), extra[r].end());
-    std::sort(cols.begin(), cols.end());
-    cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
-  }
-
-  Kokkos::DualView<std::size_t*, FECrsGraph::device_type> counts("row counts", numRows);
-  for (std::size_t r = 0; r < numRows; ++r)
-    counts.h_view(r) = columns[r].size();
+  RowColumns<Dim> columns(map, entryDofs, overlap, extraCouplings);
+  Kokkos::DualView<std::size_t*, FECrsGraph::device_type> counts("row counts", columns.numRows());
+  for (std::size_t r = 0; r < columns.numRows(); ++r)
+    counts.h_view(r) = columns(r).size();
   counts.modify_host();
   counts.sync_device();
   // Global indices: Tpetra builds the column map after exporting shared rows, so that the
@@ -76,14 +109,13 @@ Teuchos::RCP<FECrsGraph> buildGraph(const ParticleGridMap<Dim>& map,
   auto graph = Teuchos::rcp(new FECrsGraph(dofs.ownedMap(), dofs.overlapMap(), counts));
   graph->beginAssembly();
   std::vector<GO> gids;
-  for (std::size_t r = 0; r < numRows; ++r) {
-    if (columns[r].empty())
-      continue;
+  for (std::size_t r = 0; r < columns.numRows(); ++r) {
     gids.clear();
-    for (LO c : columns[r])
+    for (LO c : columns(r))
       gids.push_back(overlap.getGlobalElement(c));
-    graph->insertGlobalIndices(overlap.getGlobalElement(static_cast<LO>(r)),
-                               Teuchos::ArrayView<const GO>(gids));
+    if (!gids.empty())
+      graph->insertGlobalIndices(overlap.getGlobalElement(static_cast<LO>(r)),
+                                 Teuchos::ArrayView<const GO>(gids));
   }
   graph->endAssembly();
   return graph;
