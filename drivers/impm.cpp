@@ -11,7 +11,12 @@
 
 #include <Tpetra_Core.hpp>
 
+#include <signal.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <new>
 #include <string>
@@ -137,26 +142,71 @@ int runDeck(const Teuchos::ParameterList& deck, const Arguments& args,
   return 4;
 }
 
-// A run started without a launcher (no mpirun: one rank) needs no network: Open MPI's
-// singleton start-up otherwise probes every transport, 0.3 of a 1-D deck's 0.7 s.  Only
-// unset variables are set, so a user's choice stands; other MPI libraries ignore them.  (The
-// singleton stays attached to its runtime daemon: an isolated singleton, faster still, gets
-// the same session directory as every other isolated run, and two runs at once then break
-// each other's MPI-IO files.)
-void quietSingletonStart() {
-  for (const char* launched : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
-    if (std::getenv(launched))
+// A run started without a launcher (no mpirun: one rank) needs no network and no runtime
+// daemon: Open MPI's singleton start-up otherwise probes every transport (0.3 s) and starts
+// a daemon (0.13 s), of a 1-D deck's 0.7 s.  An isolated singleton takes the same session
+// directory as every other one, and two runs at once then broke each other's MPI-IO files,
+// so each gets its own directory, removed at exit.  Only unset variables are set, so a
+// user's choice stands; other MPI libraries ignore them.
+class QuietSingletonStart {
+ public:
+  QuietSingletonStart() {
+    for (const char* launched : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
+      if (std::getenv(launched))
+        return;
+    setenv("OMPI_MCA_pml", "ob1", 0);
+    setenv("OMPI_MCA_btl", "self,vader", 0);
+    if (std::getenv("OMPI_MCA_ess_singleton_isolated") || std::getenv("OMPI_MCA_orte_tmpdir_base"))
       return;
-  setenv("OMPI_MCA_pml", "ob1", 0);
-  setenv("OMPI_MCA_btl", "self,vader", 0);
-}
+    std::error_code error;
+    const auto temp = std::filesystem::temp_directory_path(error);
+    if (error)
+      return;
+    removeStale(temp);
+    const auto dir = temp / (kPrefix + std::to_string(getpid()));
+    if (!std::filesystem::create_directory(dir, error) || error)
+      return;  // then the daemon stays: slower, not wrong
+    sessions_ = dir;
+    setenv("OMPI_MCA_orte_tmpdir_base", dir.c_str(), 1);
+    setenv("OMPI_MCA_ess_singleton_isolated", "1", 1);
+  }
+  ~QuietSingletonStart() {  // after MPI_Finalize
+    std::error_code ignored;
+    if (!sessions_.empty())
+      std::filesystem::remove_all(sessions_, ignored);
+  }
+  QuietSingletonStart(const QuietSingletonStart&) = delete;
+  QuietSingletonStart& operator=(const QuietSingletonStart&) = delete;
+
+ private:
+  static constexpr const char* kPrefix = "impm-singleton-";
+
+  // The directories of runs that were killed (SIGKILL leaves no time to remove them): those
+  // whose process no longer exists.
+  static void removeStale(const std::filesystem::path& temp) {
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(temp, error)) {
+      const std::string name = entry.path().filename().string();
+      if (name.rfind(kPrefix, 0) != 0)
+        continue;
+      const std::string digits = name.substr(std::string(kPrefix).size());
+      if (digits.empty() || digits.size() > 9 ||
+          digits.find_first_not_of("0123456789") != std::string::npos)
+        continue;
+      if (kill(static_cast<pid_t>(std::stol(digits)), 0) != 0 && errno == ESRCH)
+        std::filesystem::remove_all(entry.path(), error);
+    }
+  }
+
+  std::filesystem::path sessions_;
+};
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  impm::keepFreedMemory();       // before any allocation
-  impm::ignoreFileSizeSignal();  // a write past ulimit -f fails with a message
-  quietSingletonStart();         // before MPI starts
+  impm::keepFreedMemory();               // before any allocation
+  impm::ignoreFileSizeSignal();          // a write past ulimit -f fails with a message
+  const QuietSingletonStart quietStart;  // before MPI starts, removed after it ends
   // Kokkos::initialize takes --help too and prints its own options: impm's --help prints
   // impm's usage only, and Kokkos' stays reachable as --kokkos-help.
   bool help = false, kokkosHelp = false;
