@@ -57,25 +57,55 @@ void addInertiaForce(MassType type, const ParticleGridMap<Dim, Space>& map,
       });
 }
 
+namespace {
+
+// The lumped mass touches only the diagonal: summed per row first, then added to the
+// matrix once per row (one search of the row instead of one per particle and node).
+template <int Dim, class Space>
+void addLumpedMassMatrix(double scale, const ParticleGridMap<Dim, Space>& map,
+                         const EntryDofs<Space>& entryRows, const EntryColumns<Space>& entryCols,
+                         const typename ParticleSet<Dim, Space>::Scalars& mass,
+                         const LocalMatrix& K) {
+  using Memory = typename Space::memory_space;
+  const LO rows = K.numRows();
+  Kokkos::View<double*, Memory> diagonal("lumped mass", rows);
+  Kokkos::View<LO*, Memory> column("diagonal column", rows);
+  Kokkos::deep_copy(column, -1);
+  auto rowPtr = map.rowPtr;
+  auto phi = map.phi;
+  Kokkos::parallel_for(
+      "impm::lumpedMassDiagonal", RangePolicy<Space>(0, map.numParticles()),
+      KOKKOS_LAMBDA(const int p) {
+        for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k)
+          for (int d = 0; d < Dim; ++d) {
+            Kokkos::atomic_add(&diagonal(entryRows(k) + d), scale * mass(p) * phi(k));
+            column(entryRows(k) + d) = entryCols(k, d);  // the same value from every entry
+          }
+      });
+  Kokkos::parallel_for(
+      "impm::lumpedMassMatrix", RangePolicy<Space>(0, rows), KOKKOS_LAMBDA(const LO row) {
+        if (column(row) >= 0)
+          RowAccumulator<LocalMatrix>(K, row).add(column(row), diagonal(row));
+      });
+}
+
+}  // namespace
+
 template <int Dim, class Space>
 void addMassMatrix(MassType type, double scale, const ParticleGridMap<Dim, Space>& map,
                    const EntryDofs<Space>& entryRows, const EntryColumns<Space>& entryCols,
                    const typename ParticleSet<Dim, Space>::Scalars& mass, const LocalMatrix& K) {
+  if (type == MassType::lumped) {
+    addLumpedMassMatrix<Dim, Space>(scale, map, entryRows, entryCols, mass, K);
+    return;
+  }
   auto rowPtr = map.rowPtr;
   auto phi = map.phi;
-  const bool consistent = type == MassType::consistent;
   Kokkos::parallel_for(
       "impm::massMatrix", RangePolicy<Space>(0, map.numParticles()), KOKKOS_LAMBDA(const int p) {
         for (std::size_t ki = rowPtr(p); ki < rowPtr(p + 1); ++ki)
           for (int d = 0; d < Dim; ++d) {
-            const LO row = entryRows(ki) + d;
-            if (!consistent) {
-              const LO col = entryCols(ki, d);
-              const double value = scale * mass(p) * phi(ki);
-              K.sumIntoValues(row, &col, 1, &value, false, true);
-              continue;
-            }
-            RowAccumulator<LocalMatrix> sum(K, row);
+            RowAccumulator<LocalMatrix> sum(K, entryRows(ki) + d);
             for (std::size_t kj = rowPtr(p); kj < rowPtr(p + 1); ++kj)
               sum.add(entryCols(kj, d), scale * mass(p) * phi(ki) * phi(kj));
           }
