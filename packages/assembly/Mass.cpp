@@ -66,26 +66,23 @@ void addLumpedMassMatrix(double scale, const ParticleGridMap<Dim, Space>& map,
                          const EntryDofs<Space>& entryRows, const EntryColumns<Space>& entryCols,
                          const typename ParticleSet<Dim, Space>::Scalars& mass,
                          const LocalMatrix& K) {
-  using Memory = typename Space::memory_space;
   const LO rows = K.numRows();
-  Kokkos::View<double*, Memory> diagonal("lumped mass", rows);
-  Kokkos::View<LO*, Memory> column("diagonal column", rows);
+  LocalValuesMutable diagonal("lumped mass", rows, 1);
+  addLumpedMass<Dim, Space>(map, entryRows, mass, diagonal);
+  Kokkos::View<LO*, typename Space::memory_space> column("diagonal column", rows);
   Kokkos::deep_copy(column, -1);
   auto rowPtr = map.rowPtr;
-  auto phi = map.phi;
   Kokkos::parallel_for(
-      "impm::lumpedMassDiagonal", RangePolicy<Space>(0, map.numParticles()),
+      "impm::diagonalColumns", RangePolicy<Space>(0, map.numParticles()),
       KOKKOS_LAMBDA(const int p) {
         for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k)
-          for (int d = 0; d < Dim; ++d) {
-            Kokkos::atomic_add(&diagonal(entryRows(k) + d), scale * mass(p) * phi(k));
+          for (int d = 0; d < Dim; ++d)
             column(entryRows(k) + d) = entryCols(k, d);  // the same value from every entry
-          }
       });
   Kokkos::parallel_for(
       "impm::lumpedMassMatrix", RangePolicy<Space>(0, rows), KOKKOS_LAMBDA(const LO row) {
         if (column(row) >= 0)
-          RowAccumulator<LocalMatrix>(K, row).add(column(row), diagonal(row));
+          RowAccumulator<LocalMatrix>(K, row).add(column(row), scale * diagonal(row, 0));
       });
 }
 
