@@ -5,6 +5,8 @@
 #include "core/Errors.hpp"
 #include "core/MpiComm.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
@@ -68,6 +70,19 @@ std::string mpiReason(int error) {
   int length = 0;
   MPI_Error_string(error, text, &length);
   return std::string(text, length);
+}
+
+// Why MPI_File_open failed.  Open MPI's file layer may leave errno from its own clean-up
+// (EBADF was seen when the directory had vanished), so the directory is asked first: the
+// system's reason when it cannot be written into, else errno or MPI's text as above.
+std::string openFailureReason(const std::string& file, int error) {
+  const int left = errno;
+  const std::filesystem::path parent = std::filesystem::path(file).parent_path();
+  errno = 0;
+  if (::access(parent.empty() ? "." : parent.c_str(), W_OK | X_OK) != 0)
+    return systemReason();
+  errno = left;
+  return mpiReason(error);
 }
 
 }  // namespace
@@ -158,7 +173,7 @@ void writeCsvTableCollectively(const std::string& path, const Teuchos::Comm<int>
   int error = MPI_File_open(raw, temporary.c_str(), MPI_MODE_CREATE | MPI_MODE_WRONLY,
                             MPI_INFO_NULL, &file);
   if (error != MPI_SUCCESS)  // collective: every rank sees the failure
-    throw FileError(path, "cannot write (" + mpiReason(error) + ")");
+    throw FileError(path, "cannot write (" + openFailureReason(temporary, error) + ")");
   std::string failure;  // this rank's, with the reason taken when it happened
   std::optional<CapturedOutput> quiet(std::in_place);  // Open MPI's file layer prints failures
   error = MPI_File_set_size(file, 0);  // an older, longer file must not leave a tail
