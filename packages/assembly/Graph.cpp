@@ -100,6 +100,8 @@ Teuchos::RCP<FECrsGraph> buildGraph(const ParticleGridMap<Dim>& map,
   const auto& overlap = *dofs.overlapMap();
   RowColumns<Dim> columns(map, entryDofs, overlap, extraCouplings);
   Kokkos::DualView<std::size_t*, FECrsGraph::device_type> counts("row counts", columns.numRows());
+  // Each row is expanded twice (here for its length, below for its columns) rather than
+  // kept: all rows at once would hold the whole graph again (some 400 MB at 10^6 particles).
   for (std::size_t r = 0; r < columns.numRows(); ++r)
     counts.h_view(r) = columns(r).size();
   counts.modify_host();

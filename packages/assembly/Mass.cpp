@@ -60,7 +60,8 @@ void addInertiaForce(MassType type, const ParticleGridMap<Dim, Space>& map,
 namespace {
 
 // The lumped mass touches only the diagonal: summed per row first, then added to the
-// matrix once per row (one search of the row instead of one per particle and node).
+// matrix once per row (one search of the row instead of one per particle and node).  Each
+// row's diagonal column is read off the entries, a pass over the map without weights.
 template <int Dim, class Space>
 void addLumpedMassMatrix(double scale, const ParticleGridMap<Dim, Space>& map,
                          const EntryDofs<Space>& entryRows, const EntryColumns<Space>& entryCols,
