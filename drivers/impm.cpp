@@ -142,20 +142,24 @@ int runDeck(const Teuchos::ParameterList& deck, const Arguments& args,
   return 4;
 }
 
-// A run started without a launcher (no mpirun: one rank) needs no network and no runtime
-// daemon: Open MPI's singleton start-up otherwise probes every transport (0.3 s) and starts
-// a daemon (0.13 s), of a 1-D deck's 0.7 s.  An isolated singleton takes the same session
-// directory as every other one, and two runs at once then broke each other's MPI-IO files,
-// so each gets its own directory, removed at exit.  Only unset variables are set, so a
-// user's choice stands; other MPI libraries ignore them.
-class QuietSingletonStart {
+// A run on one node needs no network.  Ranks that mpirun starts on this node take the
+// shared-memory transport; Open MPI otherwise sets up its TCP transport first (0.2 s of a
+// 2-rank start).  A run started without a launcher (no mpirun: one rank) needs no runtime
+// daemon either: Open MPI's singleton start-up otherwise probes every transport (0.3 s) and
+// starts a daemon (0.13 s), of a 1-D deck's 0.7 s.  An isolated singleton takes the same
+// session directory as every other one, and two runs at once then broke each other's MPI-IO
+// files, so each gets its own directory, removed at exit.  Only unset variables are set, so
+// a user's choice stands (over Open MPI's parameter files, these variables win); other MPI
+// libraries ignore them.
+class QuietMpiStart {
  public:
-  QuietSingletonStart() {
+  QuietMpiStart() {
+    if (launchedOnOneNode())
+      preferSharedMemory();
     for (const char* launched : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
       if (std::getenv(launched))
         return;
-    setenv("OMPI_MCA_pml", "ob1", 0);
-    setenv("OMPI_MCA_btl", "self,vader", 0);
+    preferSharedMemory();
     if (std::getenv("OMPI_MCA_ess_singleton_isolated") || std::getenv("OMPI_MCA_orte_tmpdir_base"))
       return;
     std::error_code error;
@@ -170,16 +174,30 @@ class QuietSingletonStart {
     setenv("OMPI_MCA_orte_tmpdir_base", dir.c_str(), 1);
     setenv("OMPI_MCA_ess_singleton_isolated", "1", 1);
   }
-  ~QuietSingletonStart() {  // after MPI_Finalize
+  ~QuietMpiStart() {  // after MPI_Finalize
     std::error_code ignored;
     if (!sessions_.empty())
       std::filesystem::remove_all(sessions_, ignored);
   }
-  QuietSingletonStart(const QuietSingletonStart&) = delete;
-  QuietSingletonStart& operator=(const QuietSingletonStart&) = delete;
+  QuietMpiStart(const QuietMpiStart&) = delete;
+  QuietMpiStart& operator=(const QuietMpiStart&) = delete;
 
  private:
   static constexpr const char* kPrefix = "impm-singleton-";
+
+  // Open MPI's shared-memory transport between ranks (and to itself), nothing else.
+  static void preferSharedMemory() {
+    setenv("OMPI_MCA_pml", "ob1", 0);
+    setenv("OMPI_MCA_btl", "self,vader", 0);
+  }
+
+  // Started by Open MPI's mpirun with every rank on this node: then no rank needs a network.
+  // Every rank sees the same two numbers, so all make the same choice.
+  static bool launchedOnOneNode() {
+    const char* size = std::getenv("OMPI_COMM_WORLD_SIZE");
+    const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+    return size && local && std::string(size) == local;
+  }
 
   // The directories of runs that were killed (SIGKILL leaves no time to remove them): those
   // whose process no longer exists.
@@ -204,9 +222,9 @@ class QuietSingletonStart {
 }  // namespace
 
 int main(int argc, char** argv) {
-  impm::keepFreedMemory();               // before any allocation
-  impm::ignoreFileSizeSignal();          // a write past ulimit -f fails with a message
-  const QuietSingletonStart quietStart;  // before MPI starts, removed after it ends
+  impm::keepFreedMemory();         // before any allocation
+  impm::ignoreFileSizeSignal();    // a write past ulimit -f fails with a message
+  const QuietMpiStart quietStart;  // before MPI starts, removed after it ends
   // Kokkos::initialize takes --help too and prints its own options: impm's --help prints
   // impm's usage only, and Kokkos' stays reachable as --kokkos-help.
   bool help = false, kokkosHelp = false;
