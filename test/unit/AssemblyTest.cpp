@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "assembly/Forces.hpp"
+#include "assembly/Kinematics.hpp"
 #include "assembly/Mass.hpp"
 #include "assembly/ParticleUpdate.hpp"
 #include "assembly/RowAccumulator.hpp"
@@ -198,6 +199,48 @@ TEST(RowAccumulator, AddsWhatSumIntoValuesAddsInAnyColumnOrder) {
   EXPECT_EQ(actual.values(0), 145.0);   // column 1 of row 0: 1 + 16 + 128
   EXPECT_EQ(actual.values(2), 8.0);     // column 4; column 7 is not in the row
   EXPECT_EQ(actual.values(4), 1024.0);  // row 1, column 0, after column 5
+}
+
+// The updated-Lagrangian tangent An is the derivative of the step-start stress Pn = P(f Fn)
+// Fn^T / J_n with respect to the step's increment f.  For a linear law P = M : F, Pn is
+// linear in f, so An_aBcD must equal Pn(f + e_cD) - Pn(f) to round-off, whatever Fn is.
+TEST(Kinematics, StepStartTangentIsTheDerivativeOfStepStartStress) {
+  constexpr int D = 2;
+  const double Fn0[D][D] = {{1.3, 0.2}, {-0.1, 0.8}}, f[D][D] = {{1.05, 0.03}, {0.02, 0.97}};
+  double M[D][D][D][D];
+  for (int k = 0; k < 16; ++k)  // no symmetry to hide a transposed index
+    (&M[0][0][0][0])[k] = 0.1 * k * k - 0.7 * k + 0.3;
+  const int cases = 1 + D * D;  // f, then f + e_cD
+  ParticleSet<D>::Tensors Fn("Fn", cases), P("P", cases), Pn("Pn", cases);
+  Tangents<D> A("A", cases), An("An", cases);
+  for (int q = 0; q < cases; ++q) {
+    double fq[D][D];
+    for (int a = 0; a < D; ++a)
+      for (int b = 0; b < D; ++b)
+        fq[a][b] = f[a][b] + (q > 0 && (q - 1) == a * D + b ? 1.0 : 0.0);
+    double F[D][D] = {};
+    for (int a = 0; a < D; ++a)
+      for (int b = 0; b < D; ++b)
+        for (int c = 0; c < D; ++c)
+          F[a][b] += fq[a][c] * Fn0[c][b];
+    for (int a = 0; a < D; ++a)
+      for (int b = 0; b < D; ++b) {
+        Fn(q, a, b) = Fn0[a][b];
+        P(q, a, b) = 0;
+        for (int c = 0; c < D; ++c)
+          for (int e = 0; e < D; ++e) {
+            P(q, a, b) += M[a][b][c][e] * F[c][e];
+            A(q, a, b, c, e) = M[a][b][c][e];
+          }
+      }
+  }
+  stressRelativeToStepStart<D>(Kinematics::updatedLagrangian, Fn, P, A, Pn, An);
+  for (int c = 0; c < D; ++c)
+    for (int d = 0; d < D; ++d)
+      for (int a = 0; a < D; ++a)
+        for (int b = 0; b < D; ++b)
+          EXPECT_NEAR(An(0, a, b, c, d), Pn(1 + c * D + d, a, b) - Pn(0, a, b), 1e-12)
+              << a << b << c << d;
 }
 
 }  // namespace

@@ -444,3 +444,46 @@ TEST(Repartition, SpreadsParticlesCrowdedOnOneRank) {
 
 }  // namespace
 }  // namespace impm
+
+#include <cfloat>
+#include <limits>
+
+#include "core/Diagnostics.hpp"
+
+namespace impm {
+namespace {
+
+// The failure messages name the first particle whose stress, tangent or state is not finite:
+// every non-finite kind is found in every position of a row, in the first and the last row,
+// extreme finite values are not, and rows past `rows` (a view's spare capacity) do not count.
+TEST(Diagnostics, FirstNonFiniteRowFindsEveryKindAndPositionAndOnlyThose) {
+  const double kinds[] = {
+      std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+      -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::signaling_NaN()};
+  const double finite[] = {DBL_MAX, -DBL_MAX, DBL_MIN, DBL_TRUE_MIN, -0.0, 0.0};
+  const std::size_t rows = 7, capacity = 9;
+  Kokkos::View<double* [2][2][2][2], Kokkos::HostSpace> A("A", capacity);
+  Kokkos::View<double*, Kokkos::HostSpace> values("values", capacity);
+  for (std::size_t k = 0; k < A.span(); ++k)
+    A.data()[k] = finite[k % 6];
+  EXPECT_EQ(firstNonFiniteRow(A, rows), -1);
+  for (const double bad : kinds)
+    for (const std::size_t row : {std::size_t(0), std::size_t(3), rows - 1})
+      for (std::size_t entry = 0; entry < 16; ++entry) {
+        double& x = A.data()[row * 16 + entry];
+        const double kept = x;
+        x = bad;
+        EXPECT_EQ(firstNonFiniteRow(A, rows), static_cast<long>(row)) << bad << " " << entry;
+        x = kept;
+      }
+  A(rows, 1, 1, 1, 1) = kinds[0];  // spare capacity
+  EXPECT_EQ(firstNonFiniteRow(A, rows), -1);
+  EXPECT_EQ(firstNonFiniteRow(A, rows + 1), static_cast<long>(rows));
+  values(rows - 1) = kinds[1];
+  values(2) = kinds[2];
+  EXPECT_EQ(firstNonFiniteRow(values, rows), 2);
+  EXPECT_EQ(firstNonFiniteRow(values, 2), -1);
+}
+
+}  // namespace
+}  // namespace impm
