@@ -142,6 +142,19 @@ Teuchos::ParameterList defaultLinearSolverParameters(OperatorKind kind, int dim,
 Teuchos::ParameterList mergedLinearSolverParameters(const Teuchos::ParameterList& deck,
                                                     OperatorKind kind, int dim, int ranks) {
   auto p = defaultLinearSolverParameters(kind, dim, ranks);
+  // The default's Ifpack2 settings belong to its Prec Type: a deck that names another one
+  // starts from none (ILUT's fill level means nothing to a block relaxation, which rejects
+  // it), while a deck that tunes the default's own Prec Type keeps the rest of them.
+  const auto precType = [](const Teuchos::ParameterList& list) -> std::string {
+    if (!list.isSublist("Preconditioner Types") ||
+        !list.sublist("Preconditioner Types").isSublist("Ifpack2"))
+      return {};
+    const auto& ifpack2 = list.sublist("Preconditioner Types").sublist("Ifpack2");
+    return ifpack2.isType<std::string>("Prec Type") ? ifpack2.get<std::string>("Prec Type") : "";
+  };
+  const std::string chosen = precType(deck);
+  if (!chosen.empty() && chosen != precType(p))
+    p.sublist("Preconditioner Types").sublist("Ifpack2").remove("Ifpack2 Settings", false);
   p.setParameters(deck);
   if (!deck.isParameter("Preconditioner Type") && deck.isSublist("Preconditioner Types")) {
     const auto& types = deck.sublist("Preconditioner Types");

@@ -226,6 +226,37 @@ TEST(LinearSolver, SchwarzWithKlu2Subdomains) {
   expectSolves(p);
 }
 
+// LAPACK's banded LU of each rank's rows (Ifpack2 block relaxation, one banded block per
+// rank: input/column_self_weight.xml).  Over the default ILUT its settings are not merged
+// with ILUT's, which a block relaxation rejects; ILUT's own settings still merge.
+TEST(LinearSolver, BandedLuOverTheIlutDefault) {
+  Teuchos::ParameterList p;
+  auto& ifpack2 = p.sublist("Preconditioner Types").sublist("Ifpack2");
+  ifpack2.set("Prec Type", std::string("BLOCK_RELAXATION"));
+  auto& settings = ifpack2.sublist("Ifpack2 Settings");
+  settings.set("relaxation: container", std::string("Banded"));
+  settings.set("partitioner: type", std::string("linear"));
+  settings.set("partitioner: local parts", 1);
+  settings.set("relaxation: type", std::string("Jacobi"));
+  const auto merged = mergedLinearSolverParameters(p, OperatorKind::small, 1, 1)
+                          .sublist("Preconditioner Types")
+                          .sublist("Ifpack2")
+                          .sublist("Ifpack2 Settings");
+  EXPECT_FALSE(merged.isParameter("fact: ilut level-of-fill"));
+  EXPECT_EQ(merged.numParams(), 4);
+  expectSolves(p);
+  Teuchos::ParameterList tuned;
+  auto& ilut = tuned.sublist("Preconditioner Types").sublist("Ifpack2");
+  ilut.set("Prec Type", std::string("ILUT"));
+  ilut.sublist("Ifpack2 Settings").set("fact: ilut level-of-fill", 1.0);
+  const auto kept = mergedLinearSolverParameters(tuned, OperatorKind::small, 1, 1)
+                        .sublist("Preconditioner Types")
+                        .sublist("Ifpack2")
+                        .sublist("Ifpack2 Settings");
+  EXPECT_EQ(kept.get<double>("fact: ilut level-of-fill"), 1.0);
+  EXPECT_TRUE(kept.isParameter("fact: drop tolerance"));
+}
+
 TEST(LinearSolver, RilukByKokkosKernels) {
   Teuchos::ParameterList p;
   auto& ifpack2 = p.sublist("Preconditioner Types").sublist("Ifpack2");
