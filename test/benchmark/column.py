@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Benchmark: P1 (the column under self-weight, 20 load steps, neo-Hookean) with cpdi as
-the particle count grows: the deck's preconditioner (additive Schwarz with a KLU2 LU of each
-rank's rows) against Ifpack2 ILUT (impm's default) and MueLu, on 1 and 2 ranks.
+the particle count grows: the deck's preconditioner (LAPACK's banded LU of each rank's rows,
+through Ifpack2's block relaxation) against additive Schwarz with a KLU2 LU of each rank's
+rows (the deck's choice before), Ifpack2 ILUT (impm's default) and MueLu, on 1 and 2 ranks.
 
 The column's grid is one cell wide, {1, N} cells with 2 x 2 particles per cell, so N =
 particles / 4; cells are 1 wide and 50 / N tall.  Records the wall time of the whole run,
@@ -25,10 +26,15 @@ from benchlib import ROOT, run_impm, write_section
 
 DECK = os.path.join(ROOT, "input", "column_self_weight.xml")
 MUELU = "Solver/Linear Solver/Preconditioner Types/MueLu/"
-ILUT = ["Solver/Linear Solver/Preconditioner Types/Ifpack2/Prec Type=ILUT"]
+IFPACK2 = "Solver/Linear Solver/Preconditioner Types/Ifpack2/"
+ILUT = [IFPACK2 + "Prec Type=ILUT"]
+SCHWARZ_KLU2 = [IFPACK2 + "Prec Type=SCHWARZ",
+                IFPACK2 + "Ifpack2 Settings/schwarz: inner preconditioner name=AMESOS2"]
 CONFIGS = [
-    ("Schwarz KLU2", 1, []),
-    ("Schwarz KLU2", 2, []),
+    ("banded LU", 1, []),
+    ("banded LU", 2, []),
+    ("Schwarz KLU2", 1, SCHWARZ_KLU2),
+    ("Schwarz KLU2", 2, SCHWARZ_KLU2),
     ("ILUT", 1, ILUT),
     ("ILUT", 2, ILUT),
     ("MueLu", 1, ["Solver/Linear Solver/Preconditioner Type=MueLu", MUELU + "verbosity=none",
