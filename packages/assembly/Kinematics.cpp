@@ -40,7 +40,8 @@ void stressRelativeToStepStart(Kinematics kinematics,
                                const Tangents<Dim, Space>& An) {
   if (kinematics == Kinematics::totalLagrangian) {
     Kokkos::deep_copy(Pn, P);
-    Kokkos::deep_copy(An, A);
+    if (An.data() != A.data())
+      Kokkos::deep_copy(An, A);
     return;
   }
   Kokkos::parallel_for(
@@ -54,6 +55,12 @@ void stressRelativeToStepStart(Kinematics kinematics,
               s += P(p, a, E) * Fn(p, B, E);
             Pn(p, a, B) = s / J;
           }
+        double Ap[Dim][Dim][Dim][Dim];  // read whole first: An may be A
+        for (int a = 0; a < Dim; ++a)
+          for (int E = 0; E < Dim; ++E)
+            for (int c = 0; c < Dim; ++c)
+              for (int G = 0; G < Dim; ++G)
+                Ap[a][E][c][G] = A(p, a, E, c, G);
         for (int a = 0; a < Dim; ++a)
           for (int B = 0; B < Dim; ++B)
             for (int c = 0; c < Dim; ++c)
@@ -61,7 +68,7 @@ void stressRelativeToStepStart(Kinematics kinematics,
                 double s = 0;
                 for (int E = 0; E < Dim; ++E)
                   for (int G = 0; G < Dim; ++G)
-                    s += A(p, a, E, c, G) * Fn(p, B, E) * Fn(p, D, G);
+                    s += Ap[a][E][c][G] * Fn(p, B, E) * Fn(p, D, G);
                 An(p, a, B, c, D) = s / J;
               }
       });

@@ -42,6 +42,9 @@ void trialDeformationGradient(Kinematics kinematics, const ParticleGridMap<Dim, 
                               const typename ParticleSet<Dim, Space>::Tensors& Fn,
                               const typename ParticleSet<Dim, Space>::Tensors& F);
 
+// Pn and An, the stress and tangent relative to the step start, from P and A (total
+// Lagrangian: copies).  An may be A itself (the push-forward then overwrites A in place, as
+// the step does: one tangent per particle held, not two).
 template <int Dim, class Space = DefaultExecSpace>
 void stressRelativeToStepStart(Kinematics kinematics,
                                const typename ParticleSet<Dim, Space>::Tensors& Fn,

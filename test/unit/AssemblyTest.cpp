@@ -241,6 +241,10 @@ TEST(Kinematics, StepStartTangentIsTheDerivativeOfStepStartStress) {
         for (int b = 0; b < D; ++b)
           EXPECT_NEAR(An(0, a, b, c, d), Pn(1 + c * D + d, a, b) - Pn(0, a, b), 1e-12)
               << a << b << c << d;
+  // In place, as the step does it (An is A): the same tangent, bit for bit.
+  stressRelativeToStepStart<D>(Kinematics::updatedLagrangian, Fn, P, A, Pn, A);
+  for (int k = 0; k < 16; ++k)
+    EXPECT_EQ(A.data()[k], An.data()[k]) << k;
 }
 
 }  // namespace
