@@ -154,12 +154,12 @@ int runDeck(const Teuchos::ParameterList& deck, const Arguments& args,
 class QuietMpiStart {
  public:
   QuietMpiStart() {
-    if (launchedOnOneNode())
-      preferSharedMemory();
-    for (const char* launched : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
-      if (std::getenv(launched))
-        return;
-    preferSharedMemory();
+    if (allRanksOnThisNode()) {
+      setenv("OMPI_MCA_pml", "ob1", 0);  // shared memory between ranks (and to itself) only
+      setenv("OMPI_MCA_btl", "self,vader", 0);
+    }
+    if (launched())
+      return;
     if (std::getenv("OMPI_MCA_ess_singleton_isolated") || std::getenv("OMPI_MCA_orte_tmpdir_base"))
       return;
     std::error_code error;
@@ -185,15 +185,19 @@ class QuietMpiStart {
  private:
   static constexpr const char* kPrefix = "impm-singleton-";
 
-  // Open MPI's shared-memory transport between ranks (and to itself), nothing else.
-  static void preferSharedMemory() {
-    setenv("OMPI_MCA_pml", "ob1", 0);
-    setenv("OMPI_MCA_btl", "self,vader", 0);
+  // Started by a launcher (mpirun or a PMI one), not as a singleton.
+  static bool launched() {
+    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
+      if (std::getenv(name))
+        return true;
+    return false;
   }
 
-  // Started by Open MPI's mpirun with every rank on this node: then no rank needs a network.
-  // Every rank sees the same two numbers, so all make the same choice.
-  static bool launchedOnOneNode() {
+  // A singleton, or every rank started by Open MPI's mpirun on this node: then no rank needs
+  // a network.  Every rank sees the same two numbers, so all make the same choice.
+  static bool allRanksOnThisNode() {
+    if (!launched())
+      return true;
     const char* size = std::getenv("OMPI_COMM_WORLD_SIZE");
     const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
     return size && local && std::string(size) == local;

@@ -212,13 +212,26 @@ TEST(LinearSolver, ConfiguredPreconditionerIsSelected) {
             "MueLu");
 }
 
+// A deck list that selects Ifpack2's `precType`: its `Ifpack2 Settings`, to fill in.
+Teuchos::ParameterList& ifpack2Settings(Teuchos::ParameterList& deck, const std::string& precType) {
+  auto& ifpack2 = deck.sublist("Preconditioner Types").sublist("Ifpack2");
+  ifpack2.set("Prec Type", precType);
+  return ifpack2.sublist("Ifpack2 Settings");
+}
+
+// The Ifpack2 settings that a deck list gives over the small-system default (ILUT).
+Teuchos::ParameterList mergedIfpack2Settings(const Teuchos::ParameterList& deck) {
+  return mergedLinearSolverParameters(deck, OperatorKind::small, 1, 1)
+      .sublist("Preconditioner Types")
+      .sublist("Ifpack2")
+      .sublist("Ifpack2 Settings");
+}
+
 // Additive Schwarz with an exact LU of each rank's rows (Amesos2 KLU2 on a one-rank
 // matrix), the settings Trilinos 13.2's Stratimikos list lacks (solver/Ifpack2Factory.hpp).
 TEST(LinearSolver, SchwarzWithKlu2Subdomains) {
   Teuchos::ParameterList p;
-  auto& ifpack2 = p.sublist("Preconditioner Types").sublist("Ifpack2");
-  ifpack2.set("Prec Type", std::string("SCHWARZ"));
-  auto& settings = ifpack2.sublist("Ifpack2 Settings");
+  auto& settings = ifpack2Settings(p, "SCHWARZ");
   settings.set("schwarz: inner preconditioner name", std::string("AMESOS2"));
   auto& inner = settings.sublist("schwarz: inner preconditioner parameters");
   inner.set("Amesos2 solver name", std::string("klu2"));
@@ -231,37 +244,25 @@ TEST(LinearSolver, SchwarzWithKlu2Subdomains) {
 // with ILUT's, which a block relaxation rejects; ILUT's own settings still merge.
 TEST(LinearSolver, BandedLuOverTheIlutDefault) {
   Teuchos::ParameterList p;
-  auto& ifpack2 = p.sublist("Preconditioner Types").sublist("Ifpack2");
-  ifpack2.set("Prec Type", std::string("BLOCK_RELAXATION"));
-  auto& settings = ifpack2.sublist("Ifpack2 Settings");
+  auto& settings = ifpack2Settings(p, "BLOCK_RELAXATION");
   settings.set("relaxation: container", std::string("Banded"));
   settings.set("partitioner: type", std::string("linear"));
   settings.set("partitioner: local parts", 1);
   settings.set("relaxation: type", std::string("Jacobi"));
-  const auto merged = mergedLinearSolverParameters(p, OperatorKind::small, 1, 1)
-                          .sublist("Preconditioner Types")
-                          .sublist("Ifpack2")
-                          .sublist("Ifpack2 Settings");
+  const auto merged = mergedIfpack2Settings(p);
   EXPECT_FALSE(merged.isParameter("fact: ilut level-of-fill"));
   EXPECT_EQ(merged.numParams(), 4);
   expectSolves(p);
   Teuchos::ParameterList tuned;
-  auto& ilut = tuned.sublist("Preconditioner Types").sublist("Ifpack2");
-  ilut.set("Prec Type", std::string("ILUT"));
-  ilut.sublist("Ifpack2 Settings").set("fact: ilut level-of-fill", 1.0);
-  const auto kept = mergedLinearSolverParameters(tuned, OperatorKind::small, 1, 1)
-                        .sublist("Preconditioner Types")
-                        .sublist("Ifpack2")
-                        .sublist("Ifpack2 Settings");
+  ifpack2Settings(tuned, "ILUT").set("fact: ilut level-of-fill", 1.0);
+  const auto kept = mergedIfpack2Settings(tuned);
   EXPECT_EQ(kept.get<double>("fact: ilut level-of-fill"), 1.0);
   EXPECT_TRUE(kept.isParameter("fact: drop tolerance"));
 }
 
 TEST(LinearSolver, RilukByKokkosKernels) {
   Teuchos::ParameterList p;
-  auto& ifpack2 = p.sublist("Preconditioner Types").sublist("Ifpack2");
-  ifpack2.set("Prec Type", std::string("RILUK"));
-  ifpack2.sublist("Ifpack2 Settings").set("fact: type", std::string("KSPILUK"));
+  ifpack2Settings(p, "RILUK").set("fact: type", std::string("KSPILUK"));
   expectSolves(p);
 }
 
