@@ -22,6 +22,7 @@
 #include "core/Parameters.hpp"
 #include "solver/LinearSolver.hpp"
 #include "solver/ModelEvaluator.hpp"
+#include "solver/RoundOffTest.hpp"
 
 namespace impm {
 
@@ -153,6 +154,11 @@ Teuchos::ParameterList NewtonSolver::validParameters() {
   declareDouble(valid, "Relative Tolerance", 1e-10,
                 "Converged when ||R|| <= this times ||R|| of the initial guess",
                 Bounds::positive());
+  declareDouble(valid, "Round-off Factor", 1.0,
+                "Also converged when ||R|| <= this times eps || |K| |x| || (0: not used), the "
+                "change of R that rounding the unknowns x to doubles can cause (K = dR/dx, "
+                "absolute values entry by entry): the residual's round-off floor",
+                Bounds::nonNegative());
   declareDouble(valid, "Update Tolerance", 1e-9,
                 "Also converged when the Newton direction is smaller than this relative to the "
                 "unknowns (0: not used); needed on fine grids, where round-off bounds "
@@ -197,6 +203,7 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList& params,
       relativeTolerance_(params.get<double>("Relative Tolerance")),
       absoluteTolerance_(params.get<double>("Absolute Tolerance")),
       updateTolerance_(params.get<double>("Update Tolerance")),
+      roundOffFactor_(params.get<double>("Round-off Factor")),
       maxIterations_(params.get<int>("Maximum Iterations")) {
   // The deck's lists are merged over impm's; a value where impm has a sublist (or the
   // reverse) is the deck's mistake.
@@ -278,6 +285,8 @@ NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vecto
   converged->addStatusTest(Teuchos::rcp(new NormF(*group, relativeTolerance_)));
   if (absoluteTolerance_ > 0)
     converged->addStatusTest(Teuchos::rcp(new NormF(absoluteTolerance_)));
+  if (roundOffFactor_ > 0)
+    converged->addStatusTest(Teuchos::rcp(new RoundOffResidual(roundOffFactor_)));
   if (updateTolerance_ > 0)
     converged->addStatusTest(Teuchos::rcp(new RelativeUpdate(updateTolerance_)));
   if (model->isLinear())

@@ -70,7 +70,7 @@ class NewtonSolver {
   Teuchos::RCP<ReusingPreconditionerFactory> reuse_;
   Teuchos::RCP<Thyra::PreconditionerBase<double>> prec_;
   Teuchos::ParameterList noxParams_;
-  double relativeTolerance_, absoluteTolerance_, updateTolerance_;
+  double relativeTolerance_, absoluteTolerance_, updateTolerance_, roundOffFactor_;
   int maxIterations_;
   std::ostream* log_ = nullptr;
   std::string indent_;

@@ -8,10 +8,13 @@
 #include <Thyra_LinearOpWithSolveFactoryHelpers.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 
+#include <cmath>
+
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
 #include "solver/LinearSolver.hpp"
 #include "solver/NewtonSolver.hpp"
+#include "solver/RoundOffTest.hpp"
 
 namespace impm {
 namespace {
@@ -95,6 +98,89 @@ TEST(NewtonSolver, ReportsFailureWithinTheIterationLimit) {
   const auto report = newton.solve(model, x);
   EXPECT_FALSE(report.converged);
   EXPECT_NE(report.failure.find("no convergence in 2 iterations"), std::string::npos);
+}
+
+// R = K x - b, K lower bidiagonal (1 on the diagonal, -1 below), b = (1e8, 0.1, 0.1, ...):
+// x_i = 1e8 + 0.1 i.  The differences x_i - x_(i-1) cancel to 0.1 from terms of 1e8, so the
+// residual cannot fall below the unknowns' rounding, about 1e-8 an entry.
+class ChainModel : public ResidualModel {
+ public:
+  explicit ChainModel(const Teuchos::RCP<const Comm>& comm)
+      : map_(Teuchos::rcp(new Map(40, 0, comm))), b_(map_) {
+    K_ = Teuchos::rcp(new CrsMatrix(map_, 2));
+    for (std::size_t k = 0; k < map_->getNodeNumElements(); ++k) {
+      const GO g = map_->getGlobalElement(k);
+      if (g == 0)
+        K_->insertGlobalValues(g, Teuchos::tuple<GO>(g), Teuchos::tuple(1.0));
+      else
+        K_->insertGlobalValues(g, Teuchos::tuple<GO>(g - 1, g), Teuchos::tuple(-1.0, 1.0));
+      b_.replaceLocalValue(static_cast<LO>(k), g == 0 ? 1e8 : 0.1);
+    }
+    K_->fillComplete();
+  }
+  Teuchos::RCP<const Map> unknownMap() const override { return map_; }
+  Teuchos::RCP<CrsMatrix> createJacobian() const override {
+    return Teuchos::rcp(new CrsMatrix(*K_, Teuchos::Copy));
+  }
+  void evaluate(const Vector& x, Vector* f, CrsMatrix* /*J: constant*/) override {
+    if (f) {
+      K_->apply(x, *f);
+      f->update(-1.0, b_, 1.0);
+    }
+  }
+  const CrsMatrix& matrix() const { return *K_; }
+  // The solution with a bump of 1 at unknown 7: a residual of about 1.4.
+  Vector perturbedSolution() const {
+    Vector x(map_);
+    for (std::size_t k = 0; k < map_->getNodeNumElements(); ++k) {
+      const GO g = map_->getGlobalElement(k);
+      x.replaceLocalValue(static_cast<LO>(k), 1e8 + 0.1 * static_cast<double>(g) + (g == 7));
+    }
+    return x;
+  }
+
+ private:
+  Teuchos::RCP<const Map> map_;
+  Teuchos::RCP<CrsMatrix> K_;
+  Vector b_;
+};
+
+TEST(RoundOff, AbsoluteProductNormTakesAbsoluteValuesEntryByEntry) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  const ChainModel model(comm);
+  Vector x(model.unknownMap());
+  const auto xi = [](GO g) { return (g % 2 ? -1.0 : 1.0) * static_cast<double>(g + 1); };
+  for (std::size_t k = 0; k < x.getMap()->getNodeNumElements(); ++k)
+    x.replaceLocalValue(static_cast<LO>(k), xi(x.getMap()->getGlobalElement(k)));
+  double expected = 1.0;  // row 0: |1| |x_0|
+  for (GO g = 1; g < 40; ++g)
+    expected += std::pow(std::abs(xi(g)) + std::abs(xi(g - 1)), 2);  // K x would cancel to +-1
+  EXPECT_NEAR(absoluteProductNorm(model.matrix(), x), std::sqrt(expected), 1e-12 * expected);
+}
+
+// The residual's floor lies above the relative tolerance: without the round-off test Newton
+// cannot converge (the update test is off); with it, one Newton step ends the solve.
+TEST(RoundOff, ResidualAtItsFloorEndsNewton) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  auto model = Teuchos::rcp(new ChainModel(comm));
+  for (const double factor : {1.0, 0.0}) {
+    auto params = solverList();
+    params.set("Relative Tolerance", 1e-10);
+    params.set("Maximum Iterations", 6);
+    params.set("Round-off Factor", factor);
+    NewtonSolver newton(params, comm);
+    Vector x = model->perturbedSolution();
+    const auto report = newton.solve(model, x);
+    const auto& r = report.residualNorms;
+    EXPECT_GT(r.back(), 1e-10 * r.front()) << "factor " << factor;
+    if (factor > 0) {
+      EXPECT_TRUE(report.converged);
+      EXPECT_EQ(report.iterations(), 1);
+      EXPECT_LE(r.back(), factor * 2.2205e-16 * absoluteProductNorm(model->matrix(), x));
+    } else {
+      EXPECT_FALSE(report.converged) << "the floor was reached: " << r.back();
+    }
+  }
 }
 
 TEST(LinearSolver, MisspeltListIsAnInputError) {

@@ -1,0 +1,36 @@
+#pragma once
+// Newton's test for a residual at its round-off floor.
+//
+// The unknowns x are doubles: rounding each x_j by a relative eps moves R(x) by up to
+// eps (|K| |x|)_i in row i, K = dR/dx.  A residual below eps || |K| |x| || is as small as any
+// floating-point x can make it (its backward error is round-off), so further Newton
+// iterations only move x by round-off.  On tall grids this floor lies above a relative
+// tolerance of 1e-10 (the strain sum_i G_ip u_i cancels terms of size |u|/h); without this
+// test the step takes one more Newton iteration, a full linear solve, to pass the update test.
+
+#include <NOX_StatusTest_Generic.H>
+
+#include "core/TpetraTypes.hpp"
+
+namespace impm {
+
+// || |K| |x| ||_2, the absolute values taken entry by entry.  Collective.
+double absoluteProductNorm(const CrsMatrix& K, const Vector& x);
+
+// Converged when ||R(x_k)|| <= factor * eps * || |K| |x_k| ||, K the Jacobian of the last
+// Newton iteration (the solver's group holds it as a Tpetra CrsMatrix).  Never on the initial
+// guess; not evaluated when an earlier test of a minimal check has already decided.
+class RoundOffResidual : public NOX::StatusTest::Generic {
+ public:
+  explicit RoundOffResidual(double factor) : factor_(factor) {}
+  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver,
+                                          NOX::StatusTest::CheckType type) override;
+  NOX::StatusTest::StatusType getStatus() const override { return status_; }
+  std::ostream& print(std::ostream& out, int indent = 0) const override;
+
+ private:
+  double factor_, norm_ = 0.0, floor_ = 0.0;
+  NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
+};
+
+}  // namespace impm
