@@ -47,6 +47,12 @@ class NewtonSolver {
     if (!reuse_.is_null())
       reuse_->forget();
   }
+  // Frees the kept preconditioner unless it was built for the unknowns `next` (the next
+  // system's, before its graph and matrix are built: the peak memory of a step).  Collective.
+  void releasePreconditionerUnlessFor(const Map& next) const {
+    if (!reuse_.is_null())
+      reuse_->releaseUnlessFor(next, prec_.get());
+  }
   // Preconditioners built and reused so far (zeros without a preconditioner).
   ReuseCounts preconditionerCounts() const {
     return reuse_.is_null() ? ReuseCounts{} : reuse_->counts();

@@ -62,6 +62,15 @@ void ReusingPreconditionerFactory::initializePrec(
   ++counts_.builds;
 }
 
+void ReusingPreconditionerFactory::releaseUnlessFor(const Map& next,
+                                                    Thyra::PreconditionerBase<double>* prec) const {
+  if (!map_.is_null() && next.isSameAs(*map_))
+    return;
+  if (auto* defaultPrec = dynamic_cast<Thyra::DefaultPreconditioner<double>*>(prec))
+    defaultPrec->uninitialize();
+  map_ = Teuchos::null;
+}
+
 void ReusingPreconditionerFactory::uninitializePrec(
     Thyra::PreconditionerBase<double>* prec,
     Teuchos::RCP<const Thyra::LinearOpSourceBase<double>>* fwdOpSrc,

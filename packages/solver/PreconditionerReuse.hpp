@@ -55,6 +55,10 @@ class ReusingPreconditionerFactory : public Thyra::PreconditionerFactoryBase<dou
   // The next request builds a new preconditioner from scratch, as a fresh run would (a run
   // restarted from a checkpoint then follows the uninterrupted run's path bit for bit).
   void forget() { map_ = Teuchos::null; }
+  // Frees `prec` (its hierarchy or factors, and its hold on the last Jacobian) unless it
+  // was built for the unknowns `next`: one that cannot serve them would otherwise stay
+  // alive while the next system is built.  Collective.
+  void releaseUnlessFor(const Map& next, Thyra::PreconditionerBase<double>* prec) const;
 
   bool isCompatible(const Thyra::LinearOpSourceBase<double>& fwdOpSrc) const override;
   Teuchos::RCP<Thyra::PreconditionerBase<double>> createPrec() const override;

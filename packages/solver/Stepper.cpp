@@ -21,7 +21,10 @@ Stepper<Dim>::Stepper(StepperSetup<Dim> setup, double nominal, double minimum)
       log_(setup_.ownership.comm()->getRank() == 0 ? &std::cout : nullptr),
       nominal_(nominal),
       minimum_(minimum),
-      layouts_(setup_.reuseLayout) {}
+      layouts_(setup_.reuseLayout) {
+  layouts_.setOnNewUnknowns(
+      [newton = &setup_.newton](const Map& next) { newton->releasePreconditionerUnlessFor(next); });
+}
 
 template <int Dim>
 Teuchos::RCP<GridSystem<Dim>> Stepper<Dim>::buildSystem(double time, double loadFactor) {

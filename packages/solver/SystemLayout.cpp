@@ -114,6 +114,14 @@ bool LayoutCache<Dim>::sameCouplings(const std::vector<std::pair<GO, GO>>& coupl
 }
 
 template <int Dim>
+void LayoutCache<Dim>::newUnknowns(const Map& owned) {
+  key_ = LayoutKey<Dim>{};
+  layout_.reset();
+  if (onNewUnknowns_)
+    onNewUnknowns_(owned);
+}
+
+template <int Dim>
 void LayoutCache<Dim>::keep(LayoutKey<Dim> key, std::shared_ptr<const SystemLayout<Dim>> layout) {
   ++(layout == layout_ ? reused_ : built_);
   if (!enabled_)
@@ -131,8 +139,10 @@ std::shared_ptr<const SystemLayout<Dim>> layoutOf(const LayoutInputs<Dim>& in,
   auto key = keyOf(in.ownership, in.map, in.contributions, firstExtra, extras);
   auto kept = cache.find(key, comm);
   std::shared_ptr<SystemLayout<Dim>> fresh;
-  if (!kept)
+  if (!kept) {
     fresh = numberUnknowns(in.ownership, in.map, firstExtra, key.touched, extras);
+    cache.newUnknowns(*fresh->dofs.ownedMap());
+  }
   const SystemLayout<Dim>& unknowns = kept ? *kept : *fresh;
   // The contributions' couplings, read against these unknowns.
   std::vector<std::pair<GO, GO>> couplings;

@@ -13,6 +13,7 @@
 // new one otherwise.  A reused layout is identical to the one that would be built, so the
 // results do not change at all.
 
+#include <functional>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -63,6 +64,12 @@ class LayoutCache {
   // True if `couplings` are the kept layout's on every rank.  Collective.
   bool sameCouplings(const std::vector<std::pair<GO, GO>>& couplings, const Comm& comm) const;
   void keep(LayoutKey<Dim> key, std::shared_ptr<const SystemLayout<Dim>> layout);
+  // Told the owned unknowns of every newly numbered layout, before its graph is built (a
+  // stepper frees the preconditioner that cannot serve them).
+  void setOnNewUnknowns(std::function<void(const Map&)> f) { onNewUnknowns_ = std::move(f); }
+  // New unknowns were numbered: the kept layout cannot serve them, so it goes before the
+  // new graph is built, and the callback is told.  Collective.
+  void newUnknowns(const Map& owned);
 
   bool enabled() const { return enabled_; }
   int built() const { return built_; }
@@ -72,6 +79,7 @@ class LayoutCache {
   bool enabled_;
   LayoutKey<Dim> key_;
   std::shared_ptr<const SystemLayout<Dim>> layout_;
+  std::function<void(const Map&)> onNewUnknowns_;
   int built_ = 0, reused_ = 0;
 };
 

@@ -14,6 +14,7 @@
 #include "core/Parameters.hpp"
 #include "solver/LinearSolver.hpp"
 #include "solver/NewtonSolver.hpp"
+#include "solver/PreconditionerReuse.hpp"
 #include "solver/RoundOffTest.hpp"
 
 namespace impm {
@@ -220,9 +221,8 @@ TEST(LinearSolver, UnknownIfpack2SettingNamesItsSublist) {
 }
 
 // 1-D Laplacian with Dirichlet ends, solved by every strategy impm documents: the full list.
-void expectSolvesFull(const Teuchos::ParameterList& params) {
-  auto comm = Teuchos::DefaultComm<int>::getComm();
-  const GO n = 200;
+// The 1-D Laplacian tridiag(-1, 2, -1) of n unknowns.
+Teuchos::RCP<CrsMatrix> laplacian(const Teuchos::RCP<const Comm>& comm, GO n) {
   auto map = Teuchos::rcp(new Map(n, 0, comm));
   auto A = Teuchos::rcp(new CrsMatrix(map, 3));
   for (std::size_t k = 0; k < map->getNodeNumElements(); ++k) {
@@ -237,10 +237,20 @@ void expectSolvesFull(const Teuchos::ParameterList& params) {
                           Teuchos::ArrayView<const double>(vals));
   }
   A->fillComplete();
-  auto lows = createLinearSolveStrategy(params, comm, "test");
-  auto op = Thyra::createConstLinearOp<double, LO, GO, Node>(
+  return A;
+}
+
+Teuchos::RCP<const Thyra::LinearOpBase<double>> thyraOperator(const Teuchos::RCP<CrsMatrix>& A) {
+  return Thyra::createConstLinearOp<double, LO, GO, Node>(
       Teuchos::rcp_implicit_cast<const Tpetra::Operator<double, LO, GO, Node>>(A));
-  auto solver = Thyra::linearOpWithSolve(*lows, op);
+}
+
+void expectSolvesFull(const Teuchos::ParameterList& params) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  const auto A = laplacian(comm, 200);
+  const auto map = A->getRowMap();
+  auto lows = createLinearSolveStrategy(params, comm, "test");
+  auto solver = Thyra::linearOpWithSolve(*lows, thyraOperator(A));
   auto b = Teuchos::rcp(new Vector(map)), x = Teuchos::rcp(new Vector(map));
   b->putScalar(1.0);
   auto status = solver->solve(Thyra::NOTRANS, *Thyra::createConstVector<double, LO, GO, Node>(b),
@@ -375,6 +385,31 @@ namespace {
 // The explicit step's elimination against the direct solution: 6 nodal unknowns with a
 // diagonal block and 2 extras coupled to a few of them (as Robin ends are), spread over the
 // ranks: x must solve J x = b to round-off.
+// A kept preconditioner stays while the next unknowns are its own (to be reused), and goes,
+// with its hold on the matrix it was built from, as soon as they differ.
+TEST(PreconditionerReuse, ReleasedWhenTheUnknownsChange) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  auto A = laplacian(comm, 200);
+  auto lows = createLinearSolveStrategy(
+      mergedLinearSolverParameters({}, OperatorKind::small, 1, comm->getSize()), comm, "test");
+  ReusingPreconditionerFactory reuse(lows->getPreconditionerFactory(), false, ReuseRules{});
+  auto prec = reuse.createPrec();
+  reuse.initializePrec(Thyra::defaultLinearOpSource(thyraOperator(A)), prec.get(),
+                       Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  ASSERT_FALSE(prec->getUnspecifiedPrecOp().is_null());
+  EXPECT_GT(A.strong_count(), 1);
+  reuse.releaseUnlessFor(*A->getRowMap(), prec.get());
+  EXPECT_FALSE(prec->getUnspecifiedPrecOp().is_null());
+  reuse.releaseUnlessFor(Map(201, 0, comm), prec.get());
+  EXPECT_TRUE(prec->getUnspecifiedPrecOp().is_null());
+  EXPECT_EQ(A.strong_count(), 1);
+  // The next request builds a new one, also for the old unknowns.
+  reuse.initializePrec(Thyra::defaultLinearOpSource(thyraOperator(A)), prec.get(),
+                       Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  EXPECT_EQ(reuse.counts().builds, 2);
+  EXPECT_EQ(reuse.counts().reuses, 0);
+}
+
 TEST(DiagonalSolve, EliminatesTheExtrasAndDivides) {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   const GO n = 8;  // 0..5 nodal, 6 and 7 extras
