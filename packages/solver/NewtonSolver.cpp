@@ -285,10 +285,12 @@ NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vecto
   converged->addStatusTest(Teuchos::rcp(new NormF(*group, relativeTolerance_)));
   if (absoluteTolerance_ > 0)
     converged->addStatusTest(Teuchos::rcp(new NormF(absoluteTolerance_)));
-  if (roundOffFactor_ > 0)
-    converged->addStatusTest(Teuchos::rcp(new RoundOffResidual(roundOffFactor_)));
+  // The update test first: it is a vector norm, the round-off test a pass over the Jacobian
+  // (NOX's minimal check skips the tests after the first that passes).
   if (updateTolerance_ > 0)
     converged->addStatusTest(Teuchos::rcp(new RelativeUpdate(updateTolerance_)));
+  if (roundOffFactor_ > 0)
+    converged->addStatusTest(Teuchos::rcp(new RoundOffResidual(roundOffFactor_)));
   if (model->isLinear())
     converged->addStatusTest(Teuchos::rcp(new LinearSystemSolved));
   auto tests = Teuchos::rcp(new Combo(Combo::OR));
