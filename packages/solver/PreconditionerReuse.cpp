@@ -5,6 +5,8 @@
 #include <Thyra_DefaultPreconditioner.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 
+#include "core/Timers.hpp"
+
 namespace impm {
 
 ReusingPreconditionerFactory::ReusingPreconditionerFactory(
@@ -55,7 +57,10 @@ void ReusingPreconditionerFactory::initializePrec(
     if (muelu_ && nullSpace_)
       inner_->getNonconstParameterList()->set("Nullspace", nullSpace_());
   }
-  inner_->initializePrec(fwdOpSrc, prec, supportSolveUse);
+  {
+    IMPM_TIMER("preconditioner");
+    inner_->initializePrec(fwdOpSrc, prec, supportSolveUse);
+  }
   map_ = map;
   firstIterations_ = -1;
   lastConverged_ = true;

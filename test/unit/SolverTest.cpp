@@ -356,6 +356,34 @@ TEST(LinearSolver, BandedLuOverTheIlutDefault) {
   EXPECT_TRUE(kept.isParameter("fact: drop tolerance"));
 }
 
+// The default's smoother is a forward sweep before and a backward one after; a deck that
+// names any smoother parameter replaces it whole (MueLu takes `smoother: pre type` over
+// `smoother: type`), one that names other MueLu parameters keeps it.
+TEST(LinearSolver, DeckSmootherReplacesTheDefaultOne) {
+  const auto muelu = [](const Teuchos::ParameterList& deck) {
+    return mergedLinearSolverParameters(deck, OperatorKind::symmetricStiffness, 2, 1)
+        .sublist("Preconditioner Types")
+        .sublist("MueLu");
+  };
+  Teuchos::ParameterList coarse;
+  coarse.sublist("Preconditioner Types").sublist("MueLu").set("coarse: max size", 500);
+  const auto kept = muelu(coarse);
+  EXPECT_EQ(kept.get<int>("coarse: max size"), 500);
+  EXPECT_EQ(kept.sublist("smoother: pre params").get<std::string>("relaxation: type"),
+            "Gauss-Seidel");
+  EXPECT_TRUE(kept.sublist("smoother: post params").get<bool>("relaxation: backward mode"));
+  Teuchos::ParameterList chebyshev;
+  chebyshev.sublist("Preconditioner Types")
+      .sublist("MueLu")
+      .set("smoother: type", std::string("CHEBYSHEV"));
+  const auto replaced = muelu(chebyshev);
+  EXPECT_EQ(replaced.get<std::string>("smoother: type"), "CHEBYSHEV");
+  for (const char* key : {"smoother: pre type", "smoother: pre params", "smoother: post type",
+                          "smoother: post params"})
+    EXPECT_FALSE(replaced.isParameter(key)) << key;
+  EXPECT_EQ(replaced.get<double>("aggregation: drop tol"), 0.05);  // the rest stays
+}
+
 TEST(LinearSolver, RilukByKokkosKernels) {
   Teuchos::ParameterList p;
   ifpack2Settings(p, "RILUK").set("fact: type", std::string("KSPILUK"));
