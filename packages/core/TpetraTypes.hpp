@@ -27,4 +27,15 @@ using MultiVector = Tpetra::MultiVector<double, LO, GO, Node>;
 using Vector = Tpetra::Vector<double, LO, GO, Node>;
 using Comm = Teuchos::Comm<int>;
 
+// The values of x (on A's row map) on A's column map, as a product A x reads them.
+// Collective.
+inline Vector onColumns(const CrsMatrix& A, const Vector& x) {
+  Vector columns(A.getColMap());
+  if (const auto importer = A.getGraph()->getImporter(); importer.is_null())
+    Tpetra::deep_copy(columns, x);  // the column map is the row map
+  else
+    columns.doImport(x, *importer, Tpetra::INSERT);
+  return columns;
+}
+
 }  // namespace impm

@@ -122,16 +122,13 @@ void GridSystem<Dim>::eliminateConstrained(const std::vector<std::pair<LO, doubl
                                            CrsMatrix& J) const {
   // Mark the prescribed unknowns on the rows and bring the marks to the columns (collective:
   // a rank without prescribed rows may hold their columns).
-  Vector marks(J.getRowMap()), atColumns(J.getColMap());
+  Vector marks(J.getRowMap());
   {
     auto m = marks.getLocalViewHost(Tpetra::Access::ReadWrite);
     for (const auto& row : rows)
       m(row.first, 0) = 1.0;
   }
-  if (const auto importer = J.getGraph()->getImporter(); importer.is_null())
-    Tpetra::deep_copy(atColumns, marks);  // the column map is the row map
-  else
-    atColumns.doImport(marks, *importer, Tpetra::INSERT);
+  const Vector atColumns = onColumns(J, marks);
   auto K = J.getLocalMatrixDevice();
   const auto rowMap = J.getRowMap()->getLocalMap(), colMap = J.getColMap()->getLocalMap();
   const auto fixedRow = marks.getLocalViewDevice(Tpetra::Access::ReadOnly);

@@ -96,7 +96,7 @@ void smoothedAggregation(Teuchos::ParameterList& p, int dim, int ranks) {
   muelu.set("aggregation: drop tol", 0.05);
   // One forward Gauss-Seidel sweep before the coarse correction and one backward after: a
   // symmetric V-cycle (CG needs one) at half the work of a symmetric sweep on both sides;
-  // 5-6 % faster on the tall columns though it takes a few more iterations.
+  // 5-10 % faster on the tall columns though it takes a quarter more iterations.
   muelu.set("smoother: pre type", "RELAXATION");
   muelu.sublist("smoother: pre params").set("relaxation: type", "Gauss-Seidel");
   muelu.set("smoother: post type", "RELAXATION");

@@ -21,6 +21,11 @@ void ReusingPreconditionerFactory::recordSolve(int iterations, bool converged) {
     firstIterations_ = iterations;
 }
 
+void ReusingPreconditionerFactory::startOver(Thyra::PreconditionerBase<double>* prec) {
+  if (auto* defaultPrec = dynamic_cast<Thyra::DefaultPreconditioner<double>*>(prec))
+    defaultPrec->uninitialize();
+}
+
 bool ReusingPreconditionerFactory::worthRebuilding() const {
   if (!lastConverged_ || firstIterations_ < 0)
     return true;
@@ -52,8 +57,7 @@ void ReusingPreconditionerFactory::initializePrec(
   }
   if (!sameUnknowns) {
     // Start over: a hierarchy (or factorisation) of other unknowns cannot be refreshed.
-    if (auto* defaultPrec = dynamic_cast<Thyra::DefaultPreconditioner<double>*>(prec))
-      defaultPrec->uninitialize();
+    startOver(prec);
     if (muelu_ && nullSpace_)
       inner_->getNonconstParameterList()->set("Nullspace", nullSpace_());
   }
@@ -71,8 +75,7 @@ void ReusingPreconditionerFactory::releaseUnlessFor(const Map& next,
                                                     Thyra::PreconditionerBase<double>* prec) const {
   if (!map_.is_null() && next.isSameAs(*map_))
     return;
-  if (auto* defaultPrec = dynamic_cast<Thyra::DefaultPreconditioner<double>*>(prec))
-    defaultPrec->uninitialize();
+  startOver(prec);
   map_ = Teuchos::null;
 }
 

@@ -74,6 +74,8 @@ class ReusingPreconditionerFactory : public Thyra::PreconditionerFactoryBase<dou
 
  private:
   bool worthRebuilding() const;
+  // Frees what `prec` holds (its hierarchy or factors, and the operator it was built from).
+  static void startOver(Thyra::PreconditionerBase<double>* prec);
 
   Teuchos::RCP<Thyra::PreconditionerFactoryBase<double>> inner_;
   bool muelu_;

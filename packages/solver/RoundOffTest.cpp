@@ -37,11 +37,7 @@ double absoluteProductSquares(const LocalMatrix& A, const ColumnView& x) {
 }  // namespace
 
 double absoluteProductNorm(const CrsMatrix& K, const Vector& x) {
-  Vector atColumns(K.getColMap());
-  if (const auto importer = K.getGraph()->getImporter(); importer.is_null())
-    Tpetra::deep_copy(atColumns, x);  // the column map is the row map
-  else
-    atColumns.doImport(x, *importer, Tpetra::INSERT);
+  const Vector atColumns = onColumns(K, x);
   const double local = absoluteProductSquares<DefaultExecSpace>(
       K.getLocalMatrixDevice(), atColumns.getLocalViewDevice(Tpetra::Access::ReadOnly));
   double global = 0.0;
