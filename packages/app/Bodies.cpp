@@ -1,6 +1,7 @@
 #include "app/Bodies.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -376,8 +377,38 @@ std::vector<std::string> Bodies<Dim>::columnNames() const {
 
 template <int Dim>
 void Bodies<Dim>::applyLoads(ParticleSet<Dim>& particles, double time) const {
+  // Loads given as numbers (the common case, and zero when not given) need no formula per
+  // particle: this runs every step, as often as a residual evaluation in explicit runs.
+  struct Constant {
+    bool all = true;
+    double bodyForce[Dim] = {}, load = 0.0;
+  };
+  std::vector<Constant> constants(bodies_.size());
+  for (std::size_t k = 0; k < bodies_.size(); ++k) {
+    const Body<Dim>& b = bodies_[k];
+    Constant& c = constants[k];
+    for (int a = 0; a < Dim; ++a)
+      c.all = c.all && b.bodyForce[a].isConstant();
+    c.all = c.all && (Dim > 1 || b.load.isConstant());
+    if (!c.all)
+      continue;
+    for (int a = 0; a < Dim; ++a)
+      c.bodyForce[a] = b.bodyForce[a](std::array<double, 0>{});
+    c.load = Dim == 1 ? b.load(std::array<double, 0>{}) : 0.0;
+    for (int a = 0; a < Dim; ++a)  // not finite: the general path names the particle
+      c.all = c.all && std::isfinite(c.bodyForce[a]);
+    c.all = c.all && std::isfinite(c.load);
+  }
   const auto host = particles.mirror(Kokkos::DefaultHostExecutionSpace());
   for (std::size_t p = 0; p < particles.size(); ++p) {
+    const Constant& c = constants[host.body(p)];
+    if (c.all) {
+      for (int a = 0; a < Dim; ++a)
+        host.force(p, a) = host.mass(p) * c.bodyForce[a];
+      if constexpr (Dim == 1)
+        host.force(p, 0) += c.load * host.volume(p);
+      continue;
+    }
     const Body<Dim>& b = bodies_[host.body(p)];
     double x[Dim], X[Dim];
     for (int d = 0; d < Dim; ++d)

@@ -32,13 +32,32 @@ GridFields<Dim>::GridFields(const NodeOwnership<Dim>& ownership, bool displaceme
 }
 
 template <int Dim>
-void GridFields<Dim>::update(const StepGrid<Dim>& step) {
-  // Every step (the displacement accumulates): local views and local node indices, not
-  // Tpetra's per-value global accessors, which cost as much as a residual evaluation.
-  auto out = values_.getLocalViewHost(Tpetra::Access::ReadWrite);
+const std::vector<LO>& GridFields<Dim>::outputSlots(const Teuchos::RCP<const Map>& dofs,
+                                                    const DofMap<Dim>& dofMap) {
+  if (slotsDofs_ == dofs && slotsNodes_ == values_.getMap())
+    return slots_;
   const auto& nodes = *values_.getMap();
-  const auto& map = *step.du.getMap();
-  const auto& dofs = step.system.dofs();
+  slots_.assign(dofs->getNodeNumElements(), -1);
+  for (std::size_t k = 0; k < slots_.size(); ++k) {
+    const GO dof = dofs->getGlobalElement(static_cast<LO>(k));
+    if (dofMap.isExtraDof(dof))
+      continue;
+    const LO node = nodes.getLocalElement(dof / Dim);
+    if (node == Teuchos::OrdinalTraits<LO>::invalid())
+      throw std::logic_error("grid output: an unknown's node is not on its rank");
+    slots_[k] = node * Dim + static_cast<LO>(dof % Dim);
+  }
+  slotsDofs_ = dofs, slotsNodes_ = values_.getMap();
+  return slots_;
+}
+
+template <int Dim>
+void GridFields<Dim>::update(const StepGrid<Dim>& step) {
+  // Every step (the displacement accumulates): local views and local indices found once
+  // per set of unknowns, not Tpetra's per-value global accessors, which cost as much as a
+  // residual evaluation.
+  const auto& slots = outputSlots(step.du.getMap(), step.system.dofs());
+  auto out = values_.getLocalViewHost(Tpetra::Access::ReadWrite);
   auto du = step.du.getData();
   Teuchos::ArrayRCP<const double> v, m;
   if (step.velocity)
@@ -48,13 +67,10 @@ void GridFields<Dim>::update(const StepGrid<Dim>& step) {
       for (int c = velocity_; c <= mass_; ++c)
         out(n, c) = 0.0;
   for (decltype(du.size()) k = 0; k < du.size(); ++k) {
-    const GO dof = map.getGlobalElement(static_cast<LO>(k));
-    if (dofs.isExtraDof(dof))
+    if (slots[k] < 0)
       continue;
-    const LO node = nodes.getLocalElement(dof / Dim);
-    if (node == Teuchos::OrdinalTraits<LO>::invalid())
-      throw std::logic_error("grid output: an unknown's node is not on its rank");
-    const int d = static_cast<int>(dof % Dim);
+    const LO node = slots[k] / Dim;
+    const int d = slots[k] % Dim;
     if (displacement_ >= 0)
       out(node, displacement_ + d) += du[k];
     if (velocity_ >= 0 && step.velocity) {

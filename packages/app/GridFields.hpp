@@ -24,9 +24,16 @@ class GridFields {
   void redistribute(const Teuchos::RCP<const Map>& nodeMap);
 
  private:
+  // Per local unknown of `dofs`: its node's local row in values_ times Dim plus its
+  // component, or -1 for an extra unknown; kept while the maps are the same.
+  const std::vector<LO>& outputSlots(const Teuchos::RCP<const Map>& dofs,
+                                     const DofMap<Dim>& dofMap);
+
   int displacement_ = -1, velocity_ = -1, mass_ = -1;  // first column of each, or -1
   std::vector<std::string> names_;
   MultiVector values_;
+  Teuchos::RCP<const Map> slotsDofs_, slotsNodes_;  // the maps slots_ was made for
+  std::vector<LO> slots_;
 };
 
 }  // namespace impm

@@ -226,7 +226,7 @@ void Simulation<Dim>::writeCheckpoint(CheckpointSeries& series, int step,
                                       const Stepper<Dim>& stepper,
                                       const Output<Dim>& output) const {
   IMPM_TIMER("checkpoint");
-  RunState<Dim> state{stepper.state(), {}, output.exodusSteps(), {}};
+  RunState<Dim> state{stepper.checkpointState(), {}, output.exodusSteps(), {}};
   state.partition = {comm_->getSize(), ownership_->decomposition().cellOwners(),
                      loadBalance_->imbalanceAfterRepartition()};
   for (const auto& c : conditions_)

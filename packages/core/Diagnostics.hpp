@@ -4,6 +4,8 @@
 // 0.25)", "grid node 7 at x = (1, 0.5)").
 
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <sstream>
 #include <string>
 
@@ -18,12 +20,33 @@ KOKKOS_INLINE_FUNCTION bool notFinite(double x) {
   return !(x - x == 0.0);
 }
 
+// 1 for NaN and +-inf, 0 otherwise, from the exponent's bits (all ones): integer operations
+// that a loop over many values vectorizes, where the comparison above does not.
+KOKKOS_INLINE_FUNCTION int nonFiniteCount(double x) {
+  std::uint64_t bits;
+  memcpy(&bits, &x, sizeof bits);
+  return ((bits >> 52) & 0x7ff) == 0x7ff ? 1 : 0;
+}
+
 // The smallest row index below `rows` of a rank 1, 2, 3 or 5 view (scalars, vectors, tensors,
 // tangents per particle) with an entry that is NaN or infinite, or -1 when there is none.
+//
+// Checked every step on every particle, so the common case is a branch-free count over the
+// view's whole allocation (it vectorizes); the search by rows runs only when that count finds
+// something, which may lie in the rows at or past `rows` that the view keeps in reserve.
 template <class View>
 long firstNonFiniteRow(const View& v, std::size_t rows) {
   using Exec = typename View::execution_space;
   static_assert(View::rank <= 3 || View::rank == 5, "firstNonFiniteRow: a view of rank 1-3 or 5");
+  if (v.span_is_contiguous()) {
+    const auto* data = v.data();
+    int count = 0;
+    Kokkos::parallel_reduce(
+        "impm::countNonFinite", Kokkos::RangePolicy<Exec>(0, v.span()),
+        KOKKOS_LAMBDA(const std::size_t i, int& n) { n += nonFiniteCount(data[i]); }, count);
+    if (count == 0)
+      return -1;
+  }
   long first = static_cast<long>(rows);
   Kokkos::parallel_reduce(
       "impm::firstNonFiniteRow", Kokkos::RangePolicy<Exec>(0, rows),

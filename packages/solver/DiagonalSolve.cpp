@@ -1,6 +1,9 @@
 #include "solver/DiagonalSolve.hpp"
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_LAPACK.hpp>
+
+#include <algorithm>
 
 #include <sstream>
 
@@ -24,7 +27,6 @@ DiagonalElimination::DiagonalElimination(const CrsMatrix& J, const Vector& nodal
                                          const std::vector<GO>& extras)
     : map_(J.getRowMap()),
       extras_(extras),
-      nodal_(nodal, Teuchos::Copy),
       dinv_(map_),
       lu_(static_cast<int>(extras.size()), static_cast<int>(extras.size())),
       pivots_(extras.size()) {
@@ -43,6 +45,7 @@ DiagonalElimination::DiagonalElimination(const CrsMatrix& J, const Vector& nodal
     }
   }
   const int n = static_cast<int>(extras.size());
+  std::vector<Vector> column, rowScaled;
   for (int k = 0; k < n; ++k) {
     const Vector e = unit(map_, extras[k]);
     Vector full(map_), row(map_);
@@ -50,40 +53,80 @@ DiagonalElimination::DiagonalElimination(const CrsMatrix& J, const Vector& nodal
     J.apply(e, row, Teuchos::TRANS);  // row k of J
     for (int j = 0; j < n; ++j)
       lu_(j, k) = unit(map_, extras[j]).dot(full);  // E
-    column_.emplace_back(map_);
-    column_.back().elementWiseMultiply(1.0, nodal, full, 0.0);
-    rowScaled_.emplace_back(map_);
-    rowScaled_.back().elementWiseMultiply(1.0, dinv_, row, 0.0);
+    column.emplace_back(map_);
+    column.back().elementWiseMultiply(1.0, nodal, full, 0.0);
+    rowScaled.emplace_back(map_);
+    rowScaled.back().elementWiseMultiply(1.0, dinv_, row, 0.0);
   }
   for (int j = 0; j < n; ++j)
     for (int k = 0; k < n; ++k)
-      lu_(j, k) -= rowScaled_[j].dot(column_[k]);
+      lu_(j, k) -= rowScaled[j].dot(column[k]);
   int info = 0;
   if (n > 0)
     Teuchos::LAPACK<int, double>().GETRF(n, n, lu_.values(), lu_.stride(), pivots_.data(), &info);
   if (info != 0)
     throw NumericalError("the explicit update's boundary-force system is singular");
+  // What solve() needs of them: their few nonzero entries.
+  for (int k = 0; k < n; ++k) {
+    column_.push_back(nonzeros(column[k]));
+    rowScaled_.push_back(nonzeros(rowScaled[k]));
+    touched_.insert(touched_.end(), column_.back().rows.begin(), column_.back().rows.end());
+    extraRows_.push_back(map_->getLocalElement(extras[k]));
+  }
+  std::sort(touched_.begin(), touched_.end());
+  touched_.erase(std::unique(touched_.begin(), touched_.end()), touched_.end());
+}
+
+DiagonalElimination::Sparse DiagonalElimination::nonzeros(const Vector& v) {
+  Sparse out;
+  auto values = v.getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (std::size_t i = 0; i < values.extent(0); ++i)
+    if (values(i, 0) != 0.0)
+      out.rows.push_back(static_cast<LO>(i)), out.values.push_back(values(i, 0));
+  return out;
 }
 
 void DiagonalElimination::solve(const Vector& b, Vector& x) const {
-  // re - C D^-1 rn, then de from the factored reduced system.
+  // re - C D^-1 rn, summed over the ranks, then de from the factored reduced system.
   const int n = static_cast<int>(extras_.size());
-  Vector bn(map_);
-  bn.elementWiseMultiply(1.0, nodal_, b, 0.0);
-  std::vector<double> de(n);
-  for (int k = 0; k < n; ++k)
-    de[k] = unit(map_, extras_[k]).dot(b) - rowScaled_[k].dot(bn);
+  auto bv = b.getLocalViewHost(Tpetra::Access::ReadOnly);
+  std::vector<double> local(n, 0.0), de(n, 0.0);
+  for (int k = 0; k < n; ++k) {
+    if (extraRows_[k] >= 0)
+      local[k] = bv(extraRows_[k], 0);
+    const Sparse& c = rowScaled_[k];
+    for (std::size_t e = 0; e < c.rows.size(); ++e)
+      local[k] -= c.values[e] * bv(c.rows[e], 0);  // D^-1 is 0 off the nodal rows
+  }
+  if (n > 0)
+    Teuchos::reduceAll(*map_->getComm(), Teuchos::REDUCE_SUM, n, local.data(), de.data());
   int info = 0;
   if (n > 0)
     Teuchos::LAPACK<int, double>().GETRS('N', n, 1, lu_.values(), lu_.stride(), pivots_.data(),
                                          de.data(), n, &info);
-  // dn = D^-1 (bn - sum_k B_k de_k); the extras take de.
+  // dn = D^-1 (rn - sum_k B_k de_k) (D^-1 is 0 on the rows that are not nodal); the extras
+  // take de.
+  x.elementWiseMultiply(1.0, dinv_, b, 0.0);
+  if (touched_.empty())
+    return;
+  auto xv = x.getLocalViewHost(Tpetra::Access::ReadWrite);
+  auto dv = dinv_.getLocalViewHost(Tpetra::Access::ReadOnly);
+  std::vector<double> rn(touched_.size());
+  for (std::size_t t = 0; t < touched_.size(); ++t)
+    rn[t] = bv(touched_[t], 0);
+  for (int k = 0; k < n; ++k) {
+    const Sparse& c = column_[k];
+    for (std::size_t e = 0; e < c.rows.size(); ++e) {
+      const auto t =
+          std::lower_bound(touched_.begin(), touched_.end(), c.rows[e]) - touched_.begin();
+      rn[t] -= de[k] * c.values[e];
+    }
+  }
+  for (std::size_t t = 0; t < touched_.size(); ++t)
+    xv(touched_[t], 0) = dv(touched_[t], 0) * rn[t];
   for (int k = 0; k < n; ++k)
-    bn.update(-de[k], column_[k], 1.0);
-  x.elementWiseMultiply(1.0, dinv_, bn, 0.0);
-  for (int k = 0; k < n; ++k)
-    if (map_->isNodeGlobalElement(extras_[k]))
-      x.replaceGlobalValue(extras_[k], de[k]);
+    if (extraRows_[k] >= 0)
+      xv(extraRows_[k], 0) = de[k];
 }
 
 }  // namespace impm

@@ -21,8 +21,9 @@ namespace impm {
 // Solves J x = b for a J whose block on the unknowns where `nodal` is 1 is diagonal;
 // `extras` are the global indices of the other unknowns that take part (rows where `nodal`
 // is 0 and that are not extras, the padding unknown of an empty rank, get x = 0).  The
-// elimination is done once, at construction; solve() is then two products and a division
-// per unknown, as many times as the matrix serves (an explicit run's fixed grid: every step).
+// elimination is done once, at construction; solve() is then one division per unknown and a
+// few operations per entry of B and C, as many times as the matrix serves (an explicit run's
+// fixed grid: every step).
 class DiagonalElimination {
  public:
   // Collective.  Throws NumericalError when a nodal diagonal entry or the reduced system is
@@ -32,10 +33,19 @@ class DiagonalElimination {
   void solve(const Vector& b, Vector& x) const;
 
  private:
+  // The nonzero entries of a vector on this rank: local rows and values.
+  struct Sparse {
+    std::vector<LO> rows;
+    std::vector<double> values;
+  };
+  static Sparse nonzeros(const Vector& v);
+
   Teuchos::RCP<const Map> map_;
   std::vector<GO> extras_;
-  Vector nodal_, dinv_;                         // the mask; D^-1 on the nodal rows, 0 elsewhere
-  std::vector<Vector> column_, rowScaled_;      // B_k (nodal part), D^-1 C_k^T
+  std::vector<LO> extraRows_;                   // local rows of the extras (-1: not owned here)
+  Vector dinv_;                                 // D^-1 on the nodal rows, 0 elsewhere
+  std::vector<Sparse> column_, rowScaled_;      // B_k (nodal part), D^-1 C_k^T
+  std::vector<LO> touched_;                     // the rows of every B_k, each once
   Teuchos::SerialDenseMatrix<int, double> lu_;  // E - C D^-1 B, factored
   std::vector<int> pivots_;
 };

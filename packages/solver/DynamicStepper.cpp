@@ -142,8 +142,15 @@ void DynamicStepper<Dim>::startFixedGrid(GridSystem<Dim>& system) {
 }
 
 template <int Dim>
-void DynamicStepper<Dim>::saveNodalState() {
-  auto& s = this->state_;
+StepperState DynamicStepper<Dim>::checkpointState() const {
+  StepperState s = this->accepted_;
+  if (fixedGrid_ && u_ && s.started)
+    saveNodalState(s);
+  return s;
+}
+
+template <int Dim>
+void DynamicStepper<Dim>::saveNodalState(StepperState& s) const {
   const auto& map = *u_->getMap();
   s.nodalDofs.clear(), s.nodalU.clear(), s.nodalV.clear(), s.nodalA.clear();
   auto u = u_->getData(), v = v_->getData(), a = a_->getData();
@@ -181,6 +188,11 @@ void DynamicStepper<Dim>::restoreNodalState(GridSystem<Dim>& system) {
     throw std::runtime_error("the restored nodal state does not fit this grid's unknowns (" +
                              std::to_string(all) + " of " + std::to_string(s.nodalDofs.size()) +
                              " found)");
+  // From here on u_, v_ and a_ hold it (checkpointState()); the copies of the state that
+  // every accepted step makes need not carry it.
+  for (StepperState* kept : {&this->state_, &this->accepted_}) {
+    kept->nodalDofs.clear(), kept->nodalU.clear(), kept->nodalV.clear(), kept->nodalA.clear();
+  }
 }
 
 template <int Dim>
@@ -252,12 +264,16 @@ template <int Dim>
 void DynamicStepper<Dim>::gridToParticles(GridSystem<Dim>& system, const Vector& du,
                                           const Vector& v, const Vector& vNew, const Vector& aNew) {
   Stepper<Dim>::gridToParticles(system, du, 1.0);
-  auto vo = system.toOverlap(v), vn = system.toOverlap(vNew), an = system.toOverlap(aNew);
+  // Without FLIP the velocity's change is not needed (it enters times 0): the new velocity
+  // stands in for the old.
+  const double flip = fixedGrid_ ? 0.0 : settings_.flip;
+  auto vn = system.toOverlap(vNew), an = system.toOverlap(aNew);
+  auto vo = flip == 0.0 ? vn : system.toOverlap(v);
   gridToParticleVelocity<Dim>(system.particleGridMap(), system.entryDofs(),
                               vo->getLocalViewDevice(Tpetra::Access::ReadOnly),
                               vn->getLocalViewDevice(Tpetra::Access::ReadOnly),
-                              an->getLocalViewDevice(Tpetra::Access::ReadOnly),
-                              fixedGrid_ ? 0.0 : settings_.flip, this->setup_.particles);
+                              an->getLocalViewDevice(Tpetra::Access::ReadOnly), flip,
+                              this->setup_.particles);
 }
 
 template <int Dim>
@@ -340,7 +356,6 @@ void DynamicStepper<Dim>::run(const StepCallback<Dim>& onStep) {
     if (fixedGrid_) {
       u_->update(1.0, *du, 1.0);
       v_ = vNew, a_ = aNew;
-      saveNodalState();
     }
     this->accept(record, StepGrid<Dim>{*system, *du, vNew.get(), mass.get()}, onStep);
   }

@@ -44,6 +44,7 @@ class DynamicStepper : public Stepper<Dim> {
   // to the minimum.  Throws NumericalError (with the time) when that fails or a particle
   // leaves the grid.
   void run(const StepCallback<Dim>& onStep) override;
+  StepperState checkpointState() const override;
 
   // The explicit stability limit h / c, c the largest wave speed sqrt(E / rho).  Collective.
   static double stableTimeStep(const GridGeometry<Dim>& grid, const ParticleSet<Dim>& particles,
@@ -61,8 +62,9 @@ class DynamicStepper : public Stepper<Dim> {
   Teuchos::RCP<Vector> fromParticles(GridSystem<Dim>& system, const Vector& mass,
                                      const typename ParticleSet<Dim>::Vectors& q);
   void startFixedGrid(GridSystem<Dim>& system);
-  // Fixed grid: the nodal u, v, a to and from the stepper's state (checkpoints).
-  void saveNodalState();
+  // Fixed grid: the nodal u, v, a to and from the stepper's state (checkpoints).  Saved
+  // only for a checkpoint: u_, v_ and a_ change only when a step is accepted.
+  void saveNodalState(StepperState& s) const;
   void restoreNodalState(GridSystem<Dim>& system);
   Teuchos::RCP<Vector> equilibriumAcceleration(GridSystem<Dim>& system, const Vector& v, double dt);
   bool solveStep(GridSystem<Dim>& system, const Acceleration& s, const Vector& v, const Vector& a,

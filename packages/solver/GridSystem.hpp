@@ -47,7 +47,7 @@ class GridSystem : public ResidualModel {
   void setInertia(const Inertia& inertia);
   // Explicit steps: the internal force is that of the start of the step whatever du is,
   // and contributes nothing to the Jacobian.
-  void freezeInternalForce(bool frozen) { frozen_ = frozen, frozenReady_ = false; }
+  void freezeInternalForce(bool frozen) { frozen_ = frozen; }
   // The time at the end of the step and the load factor (a system built at reference
   // positions serves every step of a total-Lagrangian run).
   void setTime(double time, double loadFactor) { time_ = time, loadFactor_ = loadFactor; }
@@ -90,7 +90,8 @@ class GridSystem : public ResidualModel {
   // Overlap values of an owned vector.
   Teuchos::RCP<Vector> toOverlap(const Vector& owned) const;
   // The step converged at x: the contributions and the materials commit their state (after
-  // trialState(x)).  Collective.
+  // trialState(x), whose stress then serves as the next step's start where it is the same:
+  // see startStressKept()).  Collective.
   void commit(const Vector& x);
   // The force that each contribution reporting a reactionName() exerts on the bodies through
   // its constrained unknowns at the converged x: the unconstrained residual f_int - f_ext
@@ -101,9 +102,12 @@ class GridSystem : public ResidualModel {
   // The materials alone commit their trial state.
   void commitMaterials() { commitMaterialState(particles_, materials_, trial_); }
   // Evaluates the materials at x (their trial state); returns the trial F and P, views
-  // that stay valid until the next evaluation.
-  std::pair<typename ParticleSet<Dim>::Tensors, typename ParticleSet<Dim>::Tensors> trialState(
-      const Vector& x);
+  // that stay valid until the next evaluation, and x on the overlap map.
+  struct Trial {
+    typename ParticleSet<Dim>::Tensors F, P;
+    Teuchos::RCP<const Vector> xOverlap;
+  };
+  Trial trialState(const Vector& x);
 
   const GridGeometry<Dim>& grid() const { return grid_; }
   const ParticleGridMap<Dim>& particleGridMap() const { return particleGridMap_; }
@@ -112,11 +116,18 @@ class GridSystem : public ResidualModel {
   ContributionContext<Dim> context(int contribution) const;
 
  private:
-  void updateStress(const Vector& x);
+  // The trial F, P and tangent at x, in work_; returns x on the overlap map.
+  Teuchos::RCP<const Vector> updateStress(const Vector& x);
+  // Whether the stress that trialState(x) left, once committed, is bit for bit the one the
+  // next step of this system would evaluate at du = 0: total Lagrangian (P relative to the
+  // step start is P itself) and no law with a trial state (re-evaluating a return map from
+  // its committed state could differ by round-off).
+  bool startStressKept() const;
   // c0 du - r on the overlap map in dynamic steps (the acceleration), null in static ones.
   Teuchos::RCP<Vector> acceleration(const Vector& xOverlap) const;
-  // f_int - f_ext (+ M a) + the contributions' terms at x, without the constrained rows.
-  void assembleResidual(const Vector& x, Vector& residual) const;
+  // f_int - f_ext (+ M a) + the contributions' terms at x (given on the overlap map),
+  // without the constrained rows.
+  void assembleResidual(const Vector& xOverlap, Vector& residual) const;
   // Owned local index and prescribed increment of every constrained unknown.
   std::vector<std::pair<LO, double>> constrainedRows() const;
   // Rows of prescribed unknowns: residual scale (x_i - value), Jacobian row scale e_i.
@@ -157,7 +168,11 @@ class GridSystem : public ResidualModel {
   const Teuchos::RCP<const Import>& importer_;
   Inertia inertia_;
   Teuchos::RCP<Vector> inertiaOverlap_;  // r on the overlap map
-  bool frozen_ = false, frozenReady_ = false;
+  bool frozen_ = false;
+  // What work_ holds: the stress of trialState() (which commit() may make the next step's
+  // start), the stress at the step start (du = 0, what a frozen internal force uses).
+  bool atTrialState_ = false, atStepStart_ = false;
+  Teuchos::RCP<const Vector> trialOverlap_;  // trialState()'s x on the overlap map
   double constraintScale_ = 1.0;
   StepWorkspace<Dim> ownWorkspace_;
   typename StepWorkspace<Dim>::Arrays work_;  // trial F, P, A; P, A relative to the step start

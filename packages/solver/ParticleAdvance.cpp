@@ -10,11 +10,10 @@ template <int Dim>
 void advanceParticles(GridSystem<Dim>& system, const Vector& du, Kinematics kinematics,
                       ParticleSet<Dim>& particles) {
   IMPM_TIMER("particle update");
-  const auto [F, P] = system.trialState(du);
-  auto duOverlap = system.toOverlap(du);
-  const auto values = duOverlap->getLocalViewDevice(Tpetra::Access::ReadOnly);
-  updateParticles<Dim>(kinematics, system.particleGridMap(), system.entryDofs(), values, F, P,
-                       particles);
+  const auto trial = system.trialState(du);
+  const auto values = trial.xOverlap->getLocalViewDevice(Tpetra::Access::ReadOnly);
+  updateParticles<Dim>(kinematics, system.particleGridMap(), system.entryDofs(), values, trial.F,
+                       trial.P, particles);
   moveCorners<Dim>(kinematics, system.grid(), system.particleGridMap(), system.entryDofs(), values,
                    particles);
 }

@@ -33,6 +33,9 @@ class Stepper {
   // checkpoint saves, also when the run stops in the middle of the next step: nothing of a
   // step is committed before it is accepted), and its restoration before run().
   const StepperState& state() const { return accepted_; }
+  // The same with what a stepper keeps elsewhere and saves only when asked (the nodal state
+  // of a fixed grid): what a checkpoint writes.
+  virtual StepperState checkpointState() const { return accepted_; }
   void restore(const StepperState& state) { state_ = accepted_ = state; }
   // How often a step's unknowns and graph were built and reused.
   const LayoutCache<Dim>& layouts() const { return layouts_; }
