@@ -99,8 +99,9 @@ class GridSystem : public ResidualModel {
   // of the last evaluation (Newton's last residual, at x; an explicit step's start-of-step
   // stress), so call it before anything re-evaluates the materials.  Collective.
   std::vector<double> supportForces(const Vector& x);
-  // The materials alone commit their trial state.
-  void commitMaterials() { commitMaterialState(particles_, materials_, trial_); }
+  // The materials alone commit their trial state (after a particle update: the particles'
+  // F has moved too).
+  void commitMaterials();
   // Evaluates the materials at x (their trial state); returns the trial F and P, views
   // that stay valid until the next evaluation, and x on the overlap map.
   struct Trial {
@@ -116,8 +117,11 @@ class GridSystem : public ResidualModel {
   ContributionContext<Dim> context(int contribution) const;
 
  private:
-  // The trial F, P and tangent at x, in work_; returns x on the overlap map.
+  // The trial F, P and tangent at x, in work_ (unless they are there already); returns x
+  // on the overlap map.
   Teuchos::RCP<const Vector> updateStress(const Vector& x);
+  // Whether work_ holds the stress at x, bit for bit the same x on every rank.  Collective.
+  bool stressIsAt(const Vector& x) const;
   // Whether the stress that trialState(x) left, once committed, is bit for bit the one the
   // next step of this system would evaluate at du = 0: total Lagrangian (P relative to the
   // step start is P itself) and no law with a trial state (re-evaluating a return map from
@@ -173,6 +177,9 @@ class GridSystem : public ResidualModel {
   // start), the stress at the step start (du = 0, what a frozen internal force uses).
   bool atTrialState_ = false, atStepStart_ = false;
   Teuchos::RCP<const Vector> trialOverlap_;  // trialState()'s x on the overlap map
+  // The x of the stress in work_ (null: none, or the materials have committed since), and
+  // on the overlap map.
+  Teuchos::RCP<const Vector> stressX_, stressXOverlap_;
   double constraintScale_ = 1.0;
   StepWorkspace<Dim> ownWorkspace_;
   typename StepWorkspace<Dim>::Arrays work_;  // trial F, P, A; P, A relative to the step start
