@@ -85,14 +85,55 @@ std::string openFailureReason(const std::string& file, int error) {
   return mpiReason(error);
 }
 
+std::size_t rowCount(const std::vector<std::vector<double>>& values) {
+  return values.empty() ? 0 : values[0].size();
+}
+
+// Row r of the table whose column c is values[c].
+void appendTableRow(std::string& out, const std::vector<std::vector<double>>& values,
+                    std::size_t r) {
+  appendRow(out, values.size(), [&](std::size_t c) { return values[c][r]; });
+}
+
+// The bytes that formatCsvRows would return, without holding them.
+long long formattedSize(const std::vector<std::vector<double>>& values) {
+  long long size = 0;
+  std::string row;
+  for (std::size_t r = 0; r < rowCount(values); ++r) {
+    row.clear();
+    appendTableRow(row, values, r);
+    size += static_cast<long long>(row.size());
+  }
+  return size;
+}
+
+// Writes text at offset, again from where a write that ends short without an error stopped
+// (Open MPI's file layer at a file size limit); a write that makes no progress is a failure.
+int writeAllAt(MPI_File file, MPI_Offset offset, const std::string& text) {
+  int error = MPI_SUCCESS;
+  for (std::size_t done = 0; error == MPI_SUCCESS && done < text.size();) {
+    const int chunk = static_cast<int>(std::min<std::size_t>(text.size() - done, INT_MAX / 2));
+    MPI_Status status;
+    errno = 0;
+    error = MPI_File_write_at(file, offset + static_cast<MPI_Offset>(done), text.data() + done,
+                              chunk, MPI_CHAR, &status);
+    int written = 0;
+    if (error == MPI_SUCCESS)
+      MPI_Get_count(&status, MPI_CHAR, &written);
+    if (error == MPI_SUCCESS && written <= 0)
+      error = MPI_ERR_IO;
+    done += static_cast<std::size_t>(std::max(written, 0));
+  }
+  return error;
+}
+
 }  // namespace
 
 std::string formatCsvRows(const std::vector<std::vector<double>>& values) {
-  const std::size_t rows = values.empty() ? 0 : values[0].size();
   std::string out;
-  out.reserve(rows * values.size() * 20);
-  for (std::size_t r = 0; r < rows; ++r)
-    appendRow(out, values.size(), [&](std::size_t c) { return values[c][r]; });
+  out.reserve(rowCount(values) * values.size() * 20);
+  for (std::size_t r = 0; r < rowCount(values); ++r)
+    appendTableRow(out, values, r);
   return out;
 }
 
@@ -157,10 +198,12 @@ void writeCsvTable(const std::string& path, const std::vector<std::string>& colu
 void writeCsvTableCollectively(const std::string& path, const Teuchos::Comm<int>& comm,
                                const std::vector<std::string>& columns,
                                const std::vector<std::vector<double>>& localValues) {
-  const std::string text =
-      (comm.getRank() == 0 ? header(columns) : std::string()) + formatCsvRows(localValues);
+  // The rows are formatted twice, once to count their bytes and once in blocks that are
+  // written as they fill: a table of 10^6 particles is about 0.5 GB of text, which would
+  // otherwise be held whole (and its pages faulted in) for the write.
+  const std::string head = comm.getRank() == 0 ? header(columns) : std::string();
+  long long size = static_cast<long long>(head.size()) + formattedSize(localValues), offset = 0;
   // Each rank's bytes go right after those of the ranks before it.
-  long long size = static_cast<long long>(text.size()), offset = 0;
   MPI_Comm raw = rawComm(comm);
   MPI_Exscan(&size, &offset, 1, MPI_LONG_LONG, MPI_SUM, raw);
   if (comm.getRank() == 0)
@@ -177,23 +220,26 @@ void writeCsvTableCollectively(const std::string& path, const Teuchos::Comm<int>
   std::string failure;  // this rank's, with the reason taken when it happened
   std::optional<CapturedOutput> quiet(std::in_place);  // Open MPI's file layer prints failures
   error = MPI_File_set_size(file, 0);  // an older, longer file must not leave a tail
-  // A write may end short without an error (Open MPI's file layer at a file size limit): the
-  // rest is written again, and a write that makes no progress is a failure.
-  for (std::size_t done = 0; error == MPI_SUCCESS && done < text.size();) {
-    const int chunk = static_cast<int>(std::min<std::size_t>(text.size() - done, INT_MAX / 2));
-    MPI_Status status;
-    errno = 0;
-    error = MPI_File_write_at(file, offset + static_cast<MPI_Offset>(done), text.data() + done,
-                              chunk, MPI_CHAR, &status);
-    int written = 0;
+  constexpr std::size_t block = 8 << 20;
+  std::string text = head;
+  text.reserve(block + 4096);
+  MPI_Offset at = offset;
+  const auto flush = [&] {
     if (error == MPI_SUCCESS)
-      MPI_Get_count(&status, MPI_CHAR, &written);
-    if (error == MPI_SUCCESS && written <= 0)
-      error = MPI_ERR_IO;
-    done += static_cast<std::size_t>(std::max(written, 0));
+      error = writeAllAt(file, at, text);
+    at += static_cast<MPI_Offset>(text.size());
+    text.clear();
+  };
+  for (std::size_t r = 0; r < rowCount(localValues) && error == MPI_SUCCESS; ++r) {
+    appendTableRow(text, localValues, r);
+    if (text.size() >= block)
+      flush();
   }
+  flush();
   if (error != MPI_SUCCESS)
     failure = mpiReason(error);
+  else if (at != offset + size)  // a defect, reported like a failed write (collectively)
+    failure = "the rows' text changed between counting and writing";
   error = MPI_File_close(&file);  // collective; the last bytes may be written here
   if (error != MPI_SUCCESS && failure.empty())
     failure = mpiReason(error);

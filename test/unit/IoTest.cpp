@@ -49,16 +49,16 @@ TEST(Csv, HistoryAndTableReadBackExactly) {
   std::remove(path.c_str());
 }
 
-TEST(Csv, CollectiveTableEqualsTheSerialOne) {
-  // Rank r holds rows [start_r, start_r + r + 1) of a table of 1 + 2 + ... + P rows (rank 0
-  // one row, rank 1 two, ...); the collective file must equal the serial file of the whole.
+// Rank r holds rows [start_r, start_r + (r + 1) m) of a table of (1 + 2 + ... + P) m rows;
+// the collective file must equal the serial file of the whole.
+void expectCollectiveTableEqualsTheSerialOne(int m) {
   const auto comm = Teuchos::DefaultComm<int>::getComm();
   const int rank = comm->getRank(), size = comm->getSize();
   const auto value = [](int row, int c) { return c == 0 ? row : 1.0 / (row + 3.0) - c; };
   std::vector<std::vector<double>> local(3), whole(3);
   int row = 0;
   for (int r = 0; r < size; ++r)
-    for (int k = 0; k <= r; ++k, ++row)
+    for (int k = 0; k < (r + 1) * m; ++k, ++row)
       for (int c = 0; c < 3; ++c) {
         whole[c].push_back(value(row, c));
         if (r == rank)
@@ -74,11 +74,23 @@ TEST(Csv, CollectiveTableEqualsTheSerialOne) {
     std::ifstream in(path);
     return std::string(std::istreambuf_iterator<char>(in), {});
   };
-  EXPECT_EQ(read(collective), read(serial));
+  const std::string text = read(collective);
+  EXPECT_EQ(text, read(serial));
+  if (m > 1) {  // each rank's text spans several of the blocks it is written in (8 MB)
+    EXPECT_GT(text.size(), std::size_t(size) * (16u << 20));
+  }
   comm->barrier();
   if (rank == 0)
     std::remove(collective.c_str());
   std::remove(serial.c_str());
+}
+
+TEST(Csv, CollectiveTableEqualsTheSerialOne) {
+  expectCollectiveTableEqualsTheSerialOne(1);
+}
+
+TEST(Csv, CollectiveTableWrittenInBlocksEqualsTheSerialOne) {
+  expectCollectiveTableEqualsTheSerialOne(400000);
 }
 
 TEST(Exodus, MeshVariablesAndTimeStepsReadBack) {
