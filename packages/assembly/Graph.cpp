@@ -106,18 +106,30 @@ Teuchos::RCP<FECrsGraph> buildGraph(const ParticleGridMap<Dim>& map,
     counts.h_view(r) = columns(r).size();
   counts.modify_host();
   counts.sync_device();
-  // Global indices: Tpetra builds the column map after exporting shared rows, so that the
-  // columns other ranks send along with them are part of it.
-  auto graph = Teuchos::rcp(new FECrsGraph(dofs.ownedMap(), dofs.overlapMap(), counts));
+  // On several ranks, global indices: Tpetra builds the column map after exporting shared
+  // rows, so that the columns other ranks send along with them are part of it.  On one rank
+  // nothing is sent and the overlap map holds every column: local indices on it spare
+  // Tpetra the conversions, the sort of global indices and the column map's construction
+  // (a third of the graph's time at 10^6 particles).
+  const bool serial = overlap.getComm()->getSize() == 1;
+  auto graph = serial ? Teuchos::rcp(new FECrsGraph(dofs.ownedMap(), dofs.overlapMap(),
+                                                    dofs.overlapMap(), counts))
+                      : Teuchos::rcp(new FECrsGraph(dofs.ownedMap(), dofs.overlapMap(), counts));
   graph->beginAssembly();
   std::vector<GO> gids;
   for (std::size_t r = 0; r < columns.numRows(); ++r) {
+    const auto& local = columns(r);
+    if (local.empty())
+      continue;
+    if (serial) {
+      graph->insertLocalIndices(static_cast<LO>(r), Teuchos::ArrayView<const LO>(local));
+      continue;
+    }
     gids.clear();
-    for (LO c : columns(r))
+    for (LO c : local)
       gids.push_back(overlap.getGlobalElement(c));
-    if (!gids.empty())
-      graph->insertGlobalIndices(overlap.getGlobalElement(static_cast<LO>(r)),
-                                 Teuchos::ArrayView<const GO>(gids));
+    graph->insertGlobalIndices(overlap.getGlobalElement(static_cast<LO>(r)),
+                               Teuchos::ArrayView<const GO>(gids));
   }
   graph->endAssembly();
   return graph;

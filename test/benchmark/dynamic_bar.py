@@ -5,8 +5,9 @@ system serves every step) and with moving particles (gimp, updated Lagrangian: m
 and transfers rebuilt every step).
 
 Time per step = (wall(n2 steps) - wall(n1 steps)) / (n2 - n1), medians of --repeat runs,
-which removes start-up and output; n1 = 5 and n2 = 5 + max(20, 2e6 / particles), so that
-the timed steps outweigh the jitter of process start-up (tens of ms).  The explicit time
+which removes start-up and output; n1 = 5 and n2 = 5 + max(20, 2e6 / particles) (explicit:
+max(400, 2e6 / particles), its steps being ten times cheaper), so that the timed steps
+outweigh the jitter of process start-up (tens of ms).  The explicit time
 step is 0.5 h/c (gimp's moving particles are stable only below about 0.65 h/c, see
 doc/theory.md), Newmark's 5 h/c.
 With --write, replaces the section between the markers in doc/performance.md.
@@ -49,7 +50,7 @@ def main():
         for scheme in ("explicit", "newmark"):
             for n in args.particles:
                 n1 = 5
-                n2 = n1 + max(20, 2000000 // n)
+                n2 = n1 + max(400 if scheme == "explicit" else 20, 2000000 // n)
                 per = [(wall(args.impm, n, method, scheme, n2) - wall(args.impm, n, method, scheme, n1))
                        / (n2 - n1) for _ in range(args.repeat)]
                 lines.append("| %d | %s | %s | %.2f |" % (n, method, scheme, 1e3 * statistics.median(per)))
