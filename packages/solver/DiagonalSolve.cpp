@@ -4,7 +4,6 @@
 #include <Teuchos_LAPACK.hpp>
 
 #include <algorithm>
-
 #include <sstream>
 
 #include "core/Errors.hpp"

@@ -203,7 +203,7 @@ Teuchos::RCP<const Vector> GridSystem<Dim>::updateStress(const Vector& x) {
   if (stressIsAt(x))
     return stressXOverlap_;
   IMPM_TIMER("stress update");
-  atTrialState_ = atStepStart_ = false;
+  atStepStart_ = false;
   stressX_ = Teuchos::null;  // set again once the evaluation has succeeded
   auto xo = toOverlap(x);
   {
@@ -292,8 +292,6 @@ void GridSystem<Dim>::requireFinite(const CrsMatrix& J) const {
 template <int Dim>
 typename GridSystem<Dim>::Trial GridSystem<Dim>::trialState(const Vector& x) {
   auto xo = updateStress(x);
-  atTrialState_ = true;
-  trialOverlap_ = xo;
   return {work_.F, work_.P, xo};
 }
 
@@ -474,15 +472,18 @@ std::vector<double> GridSystem<Dim>::supportForces(const Vector& x) {
 
 template <int Dim>
 void GridSystem<Dim>::commit(const Vector& x) {
-  Teuchos::RCP<const Vector> xo = trialOverlap_;
-  if (!atTrialState_)
+  // The stress of the particle update at x, when it is there, is the next step's start
+  // (startStressKept()).
+  const bool stressAtX = stressIsAt(x);
+  Teuchos::RCP<const Vector> xo = stressXOverlap_;
+  if (!stressAtX)
     xo = toOverlap(x);
   auto xHost = xo->getLocalViewHost(Tpetra::Access::ReadOnly);
   for (std::size_t c = 0; c < contributions_.size(); ++c)
     contributions_[c]->commit(context(static_cast<int>(c)), constHost(xHost));
   commitMaterials();
   // An explicit run on a fixed grid then skips one of its two law evaluations per step.
-  atStepStart_ = atTrialState_ && startStressKept();
+  atStepStart_ = stressAtX && startStressKept();
 }
 
 template <int Dim>

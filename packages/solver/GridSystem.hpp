@@ -173,10 +173,9 @@ class GridSystem : public ResidualModel {
   Inertia inertia_;
   Teuchos::RCP<Vector> inertiaOverlap_;  // r on the overlap map
   bool frozen_ = false;
-  // What work_ holds: the stress of trialState() (which commit() may make the next step's
-  // start), the stress at the step start (du = 0, what a frozen internal force uses).
-  bool atTrialState_ = false, atStepStart_ = false;
-  Teuchos::RCP<const Vector> trialOverlap_;  // trialState()'s x on the overlap map
+  // Whether work_ holds the stress at the step start (du = 0, what a frozen internal force
+  // uses): evaluated there, or the particle update's committed by commit().
+  bool atStepStart_ = false;
   // The x of the stress in work_ (null: none, or the materials have committed since), and
   // on the overlap map.
   Teuchos::RCP<const Vector> stressX_, stressXOverlap_;
