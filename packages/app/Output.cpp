@@ -363,6 +363,8 @@ std::vector<std::vector<double>> Output<Dim>::elementValues(const ParticleTable&
 template <int Dim>
 void Output<Dim>::writeFields(double time, const ParticleSet<Dim>& particles,
                               const MultiVector& gridFields, const std::vector<double>& globals) {
+  if (!writesFields())
+    return;
   const auto& comm = ownership_.comm();
   // The CSV in blocks of ids on every rank, the Exodus fields on rank 0: one read of the
   // particles for both.

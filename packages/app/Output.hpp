@@ -91,6 +91,8 @@ class Output {
          const OutputResume* resume = nullptr);
 
   bool due(int step) const { return step % every_ == 0; }
+  // Whether any particle or grid field file is written (the history always is).
+  bool writesFields() const { return csv_ || exodus_; }
   // Particle and grid fields at `time`.  gridFields: the named columns on the node map.
   // Collective.
   void writeFields(double time, const ParticleSet<Dim>& particles, const MultiVector& gridFields,

@@ -434,7 +434,7 @@ std::vector<std::string> Simulation<Dim>::run() {
     const auto F = reactions();
     output->appendHistory(history.row(r, F[0], F[1], particles_, *comm_));
     printProgress(r, F);
-    if (output->due(r.step) || r.last) {
+    if (output->writesFields() && (output->due(r.step) || r.last)) {
       IMPM_TIMER("output");
       particles_.updateDerived();  // output-only fields
       collectively(*comm_,
