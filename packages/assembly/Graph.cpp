@@ -1,6 +1,9 @@
 #include "assembly/Graph.hpp"
 
 #include <algorithm>
+#include <numeric>
+
+#include <Tpetra_Distributor.hpp>
 
 #include "core/Errors.hpp"
 
@@ -91,6 +94,41 @@ class RowColumns {
   std::vector<LO> cols_;
 };
 
+// The column map: the overlap map's columns (in its order, so that a local index of the
+// overlap map is the same column's local index here) and after them the columns that other
+// ranks' shared rows bring to this rank's owned rows.  Those are learnt by sending every
+// shared row's columns to the row's owner over `ownedToOverlap` in reverse, first their
+// counts, then the global indices.  Collective.
+template <int Dim>
+Teuchos::RCP<const Map> columnMap(RowColumns<Dim>& columns, const Map& overlap,
+                                  const Import& ownedToOverlap) {
+  const auto shared = ownedToOverlap.getRemoteLIDs();  // the rows this rank sends
+  std::vector<std::size_t> sendCounts;
+  std::vector<GO> send;
+  for (const LO r : shared) {
+    const auto& local = columns(static_cast<std::size_t>(r));
+    sendCounts.push_back(local.size());
+    for (const LO c : local)
+      send.push_back(overlap.getGlobalElement(c));
+  }
+  auto& distributor = ownedToOverlap.getDistributor();
+  std::vector<std::size_t> receiveCounts(ownedToOverlap.getNumExportIDs());
+  distributor.doReversePostsAndWaits<std::size_t>(sendCounts, 1, receiveCounts);
+  std::vector<GO> received(
+      std::accumulate(receiveCounts.begin(), receiveCounts.end(), std::size_t(0)));
+  distributor.doReversePostsAndWaits<GO>(send, sendCounts, received, receiveCounts);
+
+  std::vector<GO> gids(overlap.getNodeElementList().begin(), overlap.getNodeElementList().end());
+  const std::size_t known = gids.size();
+  for (const GO g : received)
+    if (overlap.getLocalElement(g) == Teuchos::OrdinalTraits<LO>::invalid())
+      gids.push_back(g);
+  std::sort(gids.begin() + known, gids.end());
+  gids.erase(std::unique(gids.begin() + known, gids.end()), gids.end());
+  return Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                              Teuchos::ArrayView<const GO>(gids), 0, overlap.getComm()));
+}
+
 }  // namespace
 
 template <int Dim>
@@ -106,30 +144,23 @@ Teuchos::RCP<FECrsGraph> buildGraph(const ParticleGridMap<Dim>& map,
     counts.h_view(r) = columns(r).size();
   counts.modify_host();
   counts.sync_device();
-  // On several ranks, global indices: Tpetra builds the column map after exporting shared
-  // rows, so that the columns other ranks send along with them are part of it.  On one rank
-  // nothing is sent and the overlap map holds every column: local indices on it spare
-  // Tpetra the conversions, the sort of global indices and the column map's construction
-  // (a third of the graph's time at 10^6 particles).
-  const bool serial = overlap.getComm()->getSize() == 1;
-  auto graph = serial ? Teuchos::rcp(new FECrsGraph(dofs.ownedMap(), dofs.overlapMap(),
-                                                    dofs.overlapMap(), counts))
-                      : Teuchos::rcp(new FECrsGraph(dofs.ownedMap(), dofs.overlapMap(), counts));
+  // With the column map known beforehand the rows go in as local indices: Tpetra then has
+  // no global indices to convert and sort and no column map to make (a third of the graph's
+  // time at 10^6 particles).  On one rank no row is shared and the overlap map is the
+  // column map.
+  Teuchos::RCP<const Map> columnsMap = dofs.overlapMap();
+  Teuchos::RCP<const Import> ownedToOverlap;  // FECrsGraph's own, made once here
+  if (overlap.getComm()->getSize() > 1) {
+    ownedToOverlap = Teuchos::rcp(new Import(dofs.ownedMap(), dofs.overlapMap()));
+    columnsMap = columnMap(columns, overlap, *ownedToOverlap);
+  }
+  auto graph = Teuchos::rcp(
+      new FECrsGraph(dofs.ownedMap(), dofs.overlapMap(), columnsMap, counts, ownedToOverlap));
   graph->beginAssembly();
-  std::vector<GO> gids;
   for (std::size_t r = 0; r < columns.numRows(); ++r) {
     const auto& local = columns(r);
-    if (local.empty())
-      continue;
-    if (serial) {
+    if (!local.empty())
       graph->insertLocalIndices(static_cast<LO>(r), Teuchos::ArrayView<const LO>(local));
-      continue;
-    }
-    gids.clear();
-    for (LO c : local)
-      gids.push_back(overlap.getGlobalElement(c));
-    graph->insertGlobalIndices(overlap.getGlobalElement(static_cast<LO>(r)),
-                               Teuchos::ArrayView<const GO>(gids));
   }
   graph->endAssembly();
   return graph;

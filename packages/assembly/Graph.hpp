@@ -2,10 +2,11 @@
 // The sparsity graph of the grid system: node i couples with node j when one integration
 // point touches both (the rows of the ragged array Y), every component with every other;
 // plus the couplings that boundary conditions add (boundary-force unknowns and the nodes
-// they act on).  Rows are built once with their exact length, then handed to Tpetra's
-// FECrsGraph with global indices, which exports shared rows to their owners and makes the
-// column map afterwards (so it holds the columns that arrive with shared rows).  In
-// assembly mode the matrix's local column indices refer to that column map.
+// they act on).  Rows are built once with their exact length and handed to Tpetra's
+// FECrsGraph with local indices of a column map made first: the overlap map's columns and
+// those that other ranks' shared rows will bring (exchanged ahead of the rows).  The
+// FECrsGraph then exports shared rows to their owners.  In assembly mode the matrix's local
+// column indices refer to that column map.
 
 #include <utility>
 #include <vector>

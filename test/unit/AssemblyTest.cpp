@@ -3,12 +3,19 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
+#include <Teuchos_DefaultComm.hpp>
+
+#include "assembly/EntryDofs.hpp"
 #include "assembly/Forces.hpp"
+#include "assembly/Graph.hpp"
 #include "assembly/Kinematics.hpp"
 #include "assembly/Mass.hpp"
 #include "assembly/ParticleUpdate.hpp"
 #include "assembly/RowAccumulator.hpp"
 #include "basis/Method.hpp"
+#include "core/NodeOwnership.hpp"
 
 namespace impm {
 namespace {
@@ -108,7 +115,6 @@ TEST(Forces, InternalForceSumsToZero) {
     EXPECT_NEAR(sum, 0.0, 1e-13 * size) << methodName(method);
   }
 }
-
 }  // namespace
 }  // namespace impm
 
@@ -245,6 +251,50 @@ TEST(Kinematics, StepStartTangentIsTheDerivativeOfStepStartStress) {
   stressRelativeToStepStart<D>(Kinematics::updatedLagrangian, Fn, P, A, Pn, A);
   for (int k = 0; k < 16; ++k)
     EXPECT_EQ(A.data()[k], An.data()[k]) << k;
+}
+
+// Every rank's particles couple a hub node with nodes no other rank touches, so the hub's
+// owner learns most of the hub row's columns only from the other ranks' shared rows: the
+// column map made ahead of the graph must hold them, or the owned row loses them.
+TEST(Graph, OwnedRowsHoldTheColumnsOfEveryRanksParticles) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  const int size = comm->getSize(), rank = comm->getRank();
+  constexpr GlobalId hub = 1;
+  NodeOwnership<1> own(makeGridGeometry<1>({0.0}, {1.0}, {4 * size + 4}), comm);
+  // Particle q of every rank touches {hub, 2 + 4 r + q} and {2 + 4 r + q, 3 + 4 r + q}.
+  std::vector<std::vector<GlobalId>> all;  // the particles of every rank, rank by rank
+  for (int r = 0; r < size; ++r)
+    for (GlobalId q = 0; q < 2; ++q) {
+      const GlobalId a = 2 + 4 * r + 2 * q;
+      all.push_back({hub, a}), all.push_back({a, a + 1});
+    }
+  const std::size_t first = 4 * rank, count = 4;
+  ParticleGridMap<1> map;
+  map.rowPtr = decltype(map.rowPtr)("rowPtr", count + 1);
+  map.node = decltype(map.node)("node", 2 * count);
+  map.phi = decltype(map.phi)("phi", 2 * count);
+  map.grad = decltype(map.grad)("grad", 2 * count);
+  std::vector<GlobalId> touched;
+  for (std::size_t p = 0; p < count; ++p) {
+    map.rowPtr(p + 1) = 2 * (p + 1);
+    for (int k = 0; k < 2; ++k)
+      map.node(2 * p + k) = all[first + p][k], touched.push_back(all[first + p][k]);
+  }
+  DofMap<1> dofs(own, touched, {});
+  const auto rows = entryDofs(map, *dofs.overlapMap());
+  const auto graph = buildGraph(map, rows, dofs, {});
+
+  const auto owned = dofs.ownedMap()->getNodeElementList();
+  for (const GO row : owned) {
+    std::set<GO> expected;
+    for (const auto& nodes : all)
+      if (std::find(nodes.begin(), nodes.end(), row) != nodes.end())
+        expected.insert(nodes.begin(), nodes.end());
+    Teuchos::Array<GO> cols(graph->getNumEntriesInGlobalRow(row));
+    std::size_t n = 0;
+    graph->getGlobalRowCopy(row, cols(), n);
+    EXPECT_EQ(std::set<GO>(cols.begin(), cols.begin() + n), expected) << "row " << row;
+  }
 }
 
 }  // namespace
