@@ -41,9 +41,9 @@ void addExternalForce(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Sp
 }
 
 template <int Dim, class Space>
-void addTangent(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& entryRows,
-                const EntryColumns<Space>& entryCols, const ParticleSet<Dim, Space>& particles,
-                const Tangents<Dim, Space>& An, const LocalMatrix& K) {
+void addTangent(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& entryDofs,
+                const ParticleSet<Dim, Space>& particles, const Tangents<Dim, Space>& An,
+                const LocalMatrix& K) {
   auto rowPtr = map.rowPtr;
   auto grad = map.grad;
   auto section = particles.section;
@@ -63,13 +63,13 @@ void addTangent(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& 
                 wGA[a][c][d] = w * s;
               }
           for (int a = 0; a < Dim; ++a) {
-            RowAccumulator<LocalMatrix> row(K, entryRows(ki) + a);
+            RowAccumulator<LocalMatrix> row(K, entryDofs(ki) + a);
             for (std::size_t kj = rowPtr(p); kj < rowPtr(p + 1); ++kj)
               for (int c = 0; c < Dim; ++c) {
                 double s = 0;
                 for (int d = 0; d < Dim; ++d)
                   s += wGA[a][c][d] * grad(kj, d);
-                row.add(entryCols(kj, c), s);
+                row.add(entryDofs(kj) + c, s);
               }
           }
         }
@@ -84,8 +84,8 @@ void addTangent(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& 
       const ParticleGridMap<D>&, const EntryDofs<>&, const ParticleSet<D>::Vectors&, double,   \
       const LocalValuesMutable&);                                                              \
   template void addTangent<D, DefaultExecSpace>(const ParticleGridMap<D>&, const EntryDofs<>&, \
-                                                const EntryColumns<>&, const ParticleSet<D>&,  \
-                                                const Tangents<D>&, const LocalMatrix&);
+                                                const ParticleSet<D>&, const Tangents<D>&,     \
+                                                const LocalMatrix&);
 IMPM_INSTANTIATE(1)
 IMPM_INSTANTIATE(2)
 #undef IMPM_INSTANTIATE

@@ -25,10 +25,10 @@ void addExternalForce(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Sp
                       const typename ParticleSet<Dim, Space>::Vectors& force, double scale,
                       const LocalValuesMutable& f);
 
-// Rows are overlap-map indices, columns indices in the matrix's column map.
+// Rows and columns are overlap-map indices (the column map begins with the overlap map).
 template <int Dim, class Space = DefaultExecSpace>
-void addTangent(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& entryRows,
-                const EntryColumns<Space>& entryCols, const ParticleSet<Dim, Space>& particles,
-                const Tangents<Dim, Space>& An, const LocalMatrix& K);
+void addTangent(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& entryDofs,
+                const ParticleSet<Dim, Space>& particles, const Tangents<Dim, Space>& An,
+                const LocalMatrix& K);
 
 }  // namespace impm

@@ -3,10 +3,10 @@
 // point touches both (the rows of the ragged array Y), every component with every other;
 // plus the couplings that boundary conditions add (boundary-force unknowns and the nodes
 // they act on).  Rows are built once with their exact length and handed to Tpetra's
-// FECrsGraph with local indices of a column map made first: the overlap map's columns and
-// those that other ranks' shared rows will bring (exchanged ahead of the rows).  The
-// FECrsGraph then exports shared rows to their owners.  In assembly mode the matrix's local
-// column indices refer to that column map.
+// FECrsGraph with local indices of a column map made first: the overlap map's columns, in
+// its order, then those that other ranks' shared rows will bring (exchanged ahead of the
+// rows).  The FECrsGraph then exports shared rows to their owners.  An overlap-map index is
+// thus also the column index of the same unknown, which the assembly kernels rely on.
 
 #include <utility>
 #include <vector>

@@ -29,9 +29,6 @@ using Tangents = typename Material<Dim, Space>::Tangents;
 // Per map entry k: the overlap-map index of the first component of node(k) (EntryDofs.hpp).
 template <class Space = DefaultExecSpace>
 using EntryDofs = Kokkos::View<LO*, typename Space::memory_space>;
-// Per map entry and component: the index in the Jacobian's column map.
-template <class Space = DefaultExecSpace>
-using EntryColumns = Kokkos::View<LO**, typename Space::memory_space>;
 // Local values of an overlap vector: (local index, column).  Tpetra's own memory space.
 using LocalValues = Kokkos::View<const double**, Kokkos::LayoutLeft, DefaultMemSpace>;
 using LocalValuesMutable = Kokkos::View<double**, Kokkos::LayoutLeft, DefaultMemSpace>;

@@ -60,30 +60,20 @@ void addInertiaForce(MassType type, const ParticleGridMap<Dim, Space>& map,
 namespace {
 
 // The lumped mass touches only the diagonal: summed per row first, then added to the
-// matrix once per row (one search of the row instead of one per particle and node).  Each
-// row's diagonal column is read off the entries, a pass over the map without weights.
+// matrix once per row (one search of the row instead of one per particle and node).  Rows
+// without mass (extra unknowns) are left alone.
 template <int Dim, class Space>
 void addLumpedMassMatrix(double scale, const ParticleGridMap<Dim, Space>& map,
-                         const EntryDofs<Space>& entryRows, const EntryColumns<Space>& entryCols,
+                         const EntryDofs<Space>& entryDofs,
                          const typename ParticleSet<Dim, Space>::Scalars& mass,
                          const LocalMatrix& K) {
   const LO rows = K.numRows();
   LocalValuesMutable diagonal("lumped mass", rows, 1);
-  addLumpedMass<Dim, Space>(map, entryRows, mass, diagonal);
-  Kokkos::View<LO*, typename Space::memory_space> column("diagonal column", rows);
-  Kokkos::deep_copy(column, -1);
-  auto rowPtr = map.rowPtr;
-  Kokkos::parallel_for(
-      "impm::diagonalColumns", RangePolicy<Space>(0, map.numParticles()),
-      KOKKOS_LAMBDA(const int p) {
-        for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k)
-          for (int d = 0; d < Dim; ++d)
-            column(entryRows(k) + d) = entryCols(k, d);  // the same value from every entry
-      });
+  addLumpedMass<Dim, Space>(map, entryDofs, mass, diagonal);
   Kokkos::parallel_for(
       "impm::lumpedMassMatrix", RangePolicy<Space>(0, rows), KOKKOS_LAMBDA(const LO row) {
-        if (column(row) >= 0)
-          RowAccumulator<LocalMatrix>(K, row).add(column(row), scale * diagonal(row, 0));
+        if (diagonal(row, 0) != 0.0)
+          RowAccumulator<LocalMatrix>(K, row).add(row, scale * diagonal(row, 0));
       });
 }
 
@@ -91,10 +81,10 @@ void addLumpedMassMatrix(double scale, const ParticleGridMap<Dim, Space>& map,
 
 template <int Dim, class Space>
 void addMassMatrix(MassType type, double scale, const ParticleGridMap<Dim, Space>& map,
-                   const EntryDofs<Space>& entryRows, const EntryColumns<Space>& entryCols,
+                   const EntryDofs<Space>& entryDofs,
                    const typename ParticleSet<Dim, Space>::Scalars& mass, const LocalMatrix& K) {
   if (type == MassType::lumped) {
-    addLumpedMassMatrix<Dim, Space>(scale, map, entryRows, entryCols, mass, K);
+    addLumpedMassMatrix<Dim, Space>(scale, map, entryDofs, mass, K);
     return;
   }
   auto rowPtr = map.rowPtr;
@@ -103,9 +93,9 @@ void addMassMatrix(MassType type, double scale, const ParticleGridMap<Dim, Space
       "impm::massMatrix", RangePolicy<Space>(0, map.numParticles()), KOKKOS_LAMBDA(const int p) {
         for (std::size_t ki = rowPtr(p); ki < rowPtr(p + 1); ++ki)
           for (int d = 0; d < Dim; ++d) {
-            RowAccumulator<LocalMatrix> sum(K, entryRows(ki) + d);
+            RowAccumulator<LocalMatrix> sum(K, entryDofs(ki) + d);
             for (std::size_t kj = rowPtr(p); kj < rowPtr(p + 1); ++kj)
-              sum.add(entryCols(kj, d), scale * mass(p) * phi(ki) * phi(kj));
+              sum.add(entryDofs(kj) + d, scale * mass(p) * phi(ki) * phi(kj));
           }
       });
 }
@@ -147,7 +137,7 @@ void gridToParticleVelocity(const ParticleGridMap<Dim, Space>& map,
       MassType, const ParticleGridMap<D>&, const EntryDofs<>&, const ParticleSet<D>::Scalars&,    \
       const LocalValues&, const LocalValuesMutable&);                                             \
   template void addMassMatrix<D, DefaultExecSpace>(                                               \
-      MassType, double, const ParticleGridMap<D>&, const EntryDofs<>&, const EntryColumns<>&,     \
+      MassType, double, const ParticleGridMap<D>&, const EntryDofs<>&,                            \
       const ParticleSet<D>::Scalars&, const LocalMatrix&);                                        \
   template void gridToParticleVelocity<D, DefaultExecSpace>(                                      \
       const ParticleGridMap<D>&, const EntryDofs<>&, const LocalValues&, const LocalValues&,      \

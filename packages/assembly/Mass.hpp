@@ -33,10 +33,10 @@ void addInertiaForce(MassType type, const ParticleGridMap<Dim, Space>& map,
                      const typename ParticleSet<Dim, Space>::Scalars& mass, const LocalValues& a,
                      const LocalValuesMutable& f);
 
-// K += scale M (rows: overlap-map indices, columns: the matrix's column map).
+// K += scale M (rows and columns: overlap-map indices, as in addTangent).
 template <int Dim, class Space = DefaultExecSpace>
 void addMassMatrix(MassType type, double scale, const ParticleGridMap<Dim, Space>& map,
-                   const EntryDofs<Space>& entryRows, const EntryColumns<Space>& entryCols,
+                   const EntryDofs<Space>& entryDofs,
                    const typename ParticleSet<Dim, Space>::Scalars& mass, const LocalMatrix& K);
 
 // Particle velocities and accelerations from the grid after a step:

@@ -66,7 +66,6 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
       firstExtra_(layout_->firstExtra),
       dofs_(layout_->dofs),
       entryDofs_(layout_->entryDofs),
-      entryCols_(layout_->entryCols),
       graph_(layout_->graph),
       importer_(layout_->importer),
       work_((workspace ? *workspace : ownWorkspace_).arrays(particles.size())),
@@ -356,11 +355,10 @@ void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jac
     J.beginAssembly();
     J.setAllToScalar(0.0);
     if (!frozen_)
-      addTangent<Dim>(particleGridMap_, entryDofs_, entryCols_, particles_, work_.An,
-                      J.getLocalMatrixDevice());
+      addTangent<Dim>(particleGridMap_, entryDofs_, particles_, work_.An, J.getLocalMatrixDevice());
     if (acceleration)
-      addMassMatrix<Dim>(inertia_.mass, inertia_.c0, particleGridMap_, entryDofs_, entryCols_,
-                         particles_.mass, J.getLocalMatrixDevice());
+      addMassMatrix<Dim>(inertia_.mass, inertia_.c0, particleGridMap_, entryDofs_, particles_.mass,
+                         J.getLocalMatrixDevice());
     for (std::size_t c = 0; c < contributions_.size(); ++c)
       contributions_[c]->addJacobian(context(static_cast<int>(c)), constHost(xHost), J);
     J.endAssembly();
@@ -439,7 +437,7 @@ Teuchos::RCP<CrsMatrix> GridSystem<Dim>::massMatrix(MassType type) const {
   auto M = Teuchos::rcp(new FECrsMatrix(graph_));
   M->beginAssembly();
   M->setAllToScalar(0.0);
-  addMassMatrix<Dim>(type, 1.0, particleGridMap_, entryDofs_, entryCols_, particles_.mass,
+  addMassMatrix<Dim>(type, 1.0, particleGridMap_, entryDofs_, particles_.mass,
                      M->getLocalMatrixDevice());
   const auto& owned = *dofs_.ownedMap();
   const double one = 1.0;

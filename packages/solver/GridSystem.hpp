@@ -167,7 +167,6 @@ class GridSystem : public ResidualModel {
   const std::vector<int>& firstExtra_;
   const DofMap<Dim>& dofs_;
   const EntryDofs<>& entryDofs_;
-  const EntryColumns<>& entryCols_;
   const Teuchos::RCP<FECrsGraph>& graph_;
   const Teuchos::RCP<const Import>& importer_;
   Inertia inertia_;

@@ -164,10 +164,6 @@ std::shared_ptr<const SystemLayout<Dim>> layoutOf(const LayoutInputs<Dim>& in,
     IMPM_TIMER("graph");
     fresh->graph = buildGraph(in.map, fresh->entryDofs, fresh->dofs, fresh->couplings);
   }
-  collectively(comm, [&] {
-    fresh->entryCols = impm::entryColumns<Dim>(fresh->entryDofs, *fresh->dofs.overlapMap(),
-                                               *fresh->graph->getColMap());
-  });
   cache.keep(std::move(key), fresh);
   return fresh;
 }

@@ -36,7 +36,6 @@ struct SystemLayout {
   Teuchos::RCP<const Vector> nodalMask;      // 1 on nodal unknowns, 0 on extra unknowns
   std::vector<std::pair<GO, GO>> couplings;  // the contributions' and the padding's entries
   Teuchos::RCP<FECrsGraph> graph;
-  EntryColumns<> entryCols;  // each component's index in the graph's column map
 };
 
 // What the unknowns are built from (the first three items above), on this rank.

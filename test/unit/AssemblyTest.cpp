@@ -284,6 +284,11 @@ TEST(Graph, OwnedRowsHoldTheColumnsOfEveryRanksParticles) {
   const auto rows = entryDofs(map, *dofs.overlapMap());
   const auto graph = buildGraph(map, rows, dofs, {});
 
+  // The assembly's rule: an overlap-map index is the same unknown's column index.
+  const auto& overlap = *dofs.overlapMap();
+  for (LO i = 0; i < static_cast<LO>(overlap.getNodeNumElements()); ++i)
+    EXPECT_EQ(graph->getColMap()->getGlobalElement(i), overlap.getGlobalElement(i));
+
   const auto owned = dofs.ownedMap()->getNodeElementList();
   for (const GO row : owned) {
     std::set<GO> expected;
