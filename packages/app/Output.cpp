@@ -367,20 +367,27 @@ void Output<Dim>::writeFields(double time, const ParticleSet<Dim>& particles,
     return;
   const auto& comm = ownership_.comm();
   // The CSV in blocks of ids on every rank, the Exodus fields on rank 0: one read of the
-  // particles for both.
+  // particles for both, and on one rank one table (its only block is all the rows).
   std::vector<TableRows> wanted;
   if (csv_)
     wanted.push_back(TableRows::inBlocks);
-  if (exodus_)
+  if (exodus_ && !(csv_ && comm->getSize() == 1))
     wanted.push_back(TableRows::onRoot);
   const auto tables = gatherParticles(particles, comm, totalParticles_, gathered_, wanted);
   if (csv_) {  // every rank formats and writes its block
     const auto& block = tables.front();
+    const std::string path = directory_ + "/" + prefix_ + "_particles.csv";
     std::vector<std::string> names;
-    std::vector<std::vector<double>> values;
     for (const auto& c : csvColumns_)
-      names.push_back(c.csv), values.push_back(block.column(c.csv));
-    writeCsvTableCollectively(directory_ + "/" + prefix_ + "_particles.csv", *comm, names, values);
+      names.push_back(c.csv);
+    if (names == block.names) {  // every gathered column, in order: written as it is
+      writeCsvTableCollectively(path, *comm, names, block.columns);
+    } else {
+      std::vector<std::vector<double>> values;
+      for (const auto& name : names)
+        values.push_back(block.column(name));
+      writeCsvTableCollectively(path, *comm, names, values);
+    }
   }
   if (!exodus_)
     return;
