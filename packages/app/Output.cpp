@@ -376,18 +376,16 @@ void Output<Dim>::writeFields(double time, const ParticleSet<Dim>& particles,
   const auto tables = gatherParticles(particles, comm, totalParticles_, gathered_, wanted);
   if (csv_) {  // every rank formats and writes its block
     const auto& block = tables.front();
-    const std::string path = directory_ + "/" + prefix_ + "_particles.csv";
     std::vector<std::string> names;
     for (const auto& c : csvColumns_)
       names.push_back(c.csv);
-    if (names == block.names) {  // every gathered column, in order: written as it is
-      writeCsvTableCollectively(path, *comm, names, block.columns);
-    } else {
-      std::vector<std::vector<double>> values;
+    // The table's own columns when they are the CSV's, in order; a selection otherwise.
+    std::vector<std::vector<double>> selected;
+    if (names != block.names)
       for (const auto& name : names)
-        values.push_back(block.column(name));
-      writeCsvTableCollectively(path, *comm, names, values);
-    }
+        selected.push_back(block.column(name));
+    writeCsvTableCollectively(directory_ + "/" + prefix_ + "_particles.csv", *comm, names,
+                              names == block.names ? block.columns : selected);
   }
   if (!exodus_)
     return;
