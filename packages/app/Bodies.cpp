@@ -376,17 +376,11 @@ std::vector<std::string> Bodies<Dim>::columnNames() const {
 }
 
 template <int Dim>
-void Bodies<Dim>::applyLoads(ParticleSet<Dim>& particles, double time) const {
-  // Loads given as numbers (the common case, and zero when not given) need no formula per
-  // particle: this runs every step, as often as a residual evaluation in explicit runs.
-  struct Constant {
-    bool all = true;
-    double bodyForce[Dim] = {}, load = 0.0;
-  };
-  std::vector<Constant> constants(bodies_.size());
+std::vector<typename Bodies<Dim>::ConstantLoads> Bodies<Dim>::constantLoads() const {
+  std::vector<ConstantLoads> constants(bodies_.size());
   for (std::size_t k = 0; k < bodies_.size(); ++k) {
     const Body<Dim>& b = bodies_[k];
-    Constant& c = constants[k];
+    ConstantLoads& c = constants[k];
     for (int a = 0; a < Dim; ++a)
       c.all = c.all && b.bodyForce[a].isConstant();
     c.all = c.all && (Dim > 1 || b.load.isConstant());
@@ -399,9 +393,24 @@ void Bodies<Dim>::applyLoads(ParticleSet<Dim>& particles, double time) const {
       c.all = c.all && std::isfinite(c.bodyForce[a]);
     c.all = c.all && std::isfinite(c.load);
   }
+  return constants;
+}
+
+template <int Dim>
+void Bodies<Dim>::applyLoads(ParticleSet<Dim>& particles, double time) {
+  // Loads given as numbers need no formula per particle: this runs every step, as often as
+  // a residual evaluation in explicit runs.  When they are the numbers of the last call and
+  // do not involve a particle's length, the forces set then are still right (a particle's
+  // mass does not change, and migration carries the forces along): nothing is done.
+  const auto constants = constantLoads();
+  const bool fixed = std::all_of(constants.begin(), constants.end(),
+                                 [](const ConstantLoads& c) { return c.all && c.load == 0.0; });
+  if (fixed && constants == applied_)
+    return;
+  applied_ = fixed ? constants : std::vector<ConstantLoads>();
   const auto host = particles.mirror(Kokkos::DefaultHostExecutionSpace());
   for (std::size_t p = 0; p < particles.size(); ++p) {
-    const Constant& c = constants[host.body(p)];
+    const ConstantLoads& c = constants[host.body(p)];
     if (c.all) {
       for (int a = 0; a < Dim; ++a)
         host.force(p, a) = host.mass(p) * c.bodyForce[a];

@@ -6,6 +6,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <string>
@@ -70,8 +71,9 @@ class Bodies {
   std::vector<std::string> columnNames() const;
 
   // Sets particles.force to the loads at `time`: the distributed load (per unit length)
-  // times the particle's length plus its mass times the body force (per unit mass).
-  void applyLoads(ParticleSet<Dim>& particles, double time) const;
+  // times the particle's length plus its mass times the body force (per unit mass).  Only
+  // this sets the forces; `particles` is the same set at every call.
+  void applyLoads(ParticleSet<Dim>& particles, double time);
 
  private:
   // The corners of particle p, from seed k of `shape`.
@@ -79,8 +81,21 @@ class Bodies {
                            std::size_t p, const Shape<Dim>& shape, std::size_t k,
                            const Seed<Dim>& seed, const double F[Dim][Dim]);
 
+  // A body's loads when given as numbers (the common case, and zero when not given).
+  struct ConstantLoads {
+    bool all = true;  // false: a formula, or a value that is not finite
+    double bodyForce[Dim] = {}, load = 0.0;
+    bool operator==(const ConstantLoads& o) const {
+      return all && o.all && load == o.load && std::equal(bodyForce, bodyForce + Dim, o.bodyForce);
+    }
+  };
+  std::vector<ConstantLoads> constantLoads() const;
+
   GridGeometry<Dim> grid_;
   std::vector<Body<Dim>> bodies_;
+  // The loads of the last applyLoads when every body's were numbers without a distributed
+  // load (whose force scales with the particle's length); empty otherwise.
+  std::vector<ConstantLoads> applied_;
 };
 
 }  // namespace impm

@@ -56,33 +56,56 @@ void GridFields<Dim>::update(const StepGrid<Dim>& step) {
   // Every step (the displacement accumulates): local views and local indices found once
   // per set of unknowns, not Tpetra's per-value global accessors, which cost as much as a
   // residual evaluation.
+  if (step.du.getMap() != slotsDofs_)
+    copyPending();  // the step before's, on its own unknowns
   const auto& slots = outputSlots(step.du.getMap(), step.system.dofs());
-  auto out = values_.getLocalViewHost(Tpetra::Access::ReadWrite);
-  auto du = step.du.getData();
-  Teuchos::ArrayRCP<const double> v, m;
-  if (step.velocity)
-    v = step.velocity->getData(), m = step.mass->getData();
-  if (velocity_ >= 0)
-    for (std::size_t n = 0; n < out.extent(0); ++n)
-      for (int c = velocity_; c <= mass_; ++c)
-        out(n, c) = 0.0;
-  for (decltype(du.size()) k = 0; k < du.size(); ++k) {
-    if (slots[k] < 0)
-      continue;
-    const LO node = slots[k] / Dim;
-    const int d = slots[k] % Dim;
-    if (displacement_ >= 0)
-      out(node, displacement_ + d) += du[k];
-    if (velocity_ >= 0 && step.velocity) {
-      out(node, velocity_ + d) = v[k];
-      if (d == 0)
-        out(node, mass_) = m[k];
-    }
+  if (displacement_ >= 0) {
+    auto out = values_.getLocalViewHost(Tpetra::Access::ReadWrite);
+    auto du = step.du.getData();
+    for (decltype(du.size()) k = 0; k < du.size(); ++k)
+      if (slots[k] >= 0)
+        out(slots[k] / Dim, displacement_ + slots[k] % Dim) += du[k];
   }
+  if (velocity_ >= 0 && step.velocity)
+    pendingVelocity_ = step.velocity, pendingMass_ = step.mass;
+}
+
+template <int Dim>
+void GridFields<Dim>::copyPending() const {
+  if (!pendingVelocity_)
+    return;
+  auto out = values_.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (std::size_t n = 0; n < out.extent(0); ++n)
+    for (int c = velocity_; c <= mass_; ++c)
+      out(n, c) = 0.0;
+  auto v = pendingVelocity_->getData(), m = pendingMass_->getData();
+  for (decltype(v.size()) k = 0; k < v.size(); ++k) {
+    if (slots_[k] < 0)
+      continue;
+    const LO node = slots_[k] / Dim;
+    const int d = slots_[k] % Dim;
+    out(node, velocity_ + d) = v[k];
+    if (d == 0)
+      out(node, mass_) = m[k];
+  }
+  pendingVelocity_ = Teuchos::null, pendingMass_ = Teuchos::null;
+}
+
+template <int Dim>
+const MultiVector& GridFields<Dim>::values() const {
+  copyPending();
+  return values_;
+}
+
+template <int Dim>
+MultiVector& GridFields<Dim>::values() {
+  copyPending();
+  return values_;
 }
 
 template <int Dim>
 void GridFields<Dim>::redistribute(const Teuchos::RCP<const Map>& nodeMap) {
+  copyPending();
   MultiVector moved(nodeMap, values_.getNumVectors());
   moved.doImport(values_, Import(values_.getMap(), nodeMap), Tpetra::INSERT);
   values_.swap(moved);

@@ -17,8 +17,10 @@ class GridFields {
   GridFields(const NodeOwnership<Dim>& ownership, bool displacement, bool dynamic);
 
   const std::vector<std::string>& names() const { return names_; }
-  const MultiVector& values() const { return values_; }
-  MultiVector& values() { return values_; }  // restored at a restart
+  // The values at the last step.  The velocity and mass change wholesale every step and are
+  // read only at outputs and checkpoints: they are copied in when read.
+  const MultiVector& values() const;
+  MultiVector& values();  // restored at a restart
   void update(const StepGrid<Dim>& step);
   // The values move to `nodeMap` (the ownership's after a repartition).  Collective.
   void redistribute(const Teuchos::RCP<const Map>& nodeMap);
@@ -29,9 +31,14 @@ class GridFields {
   const std::vector<LO>& outputSlots(const Teuchos::RCP<const Map>& dofs,
                                      const DofMap<Dim>& dofMap);
 
+  // Copies the last step's velocity and mass into values_, once.
+  void copyPending() const;
+
   int displacement_ = -1, velocity_ = -1, mass_ = -1;  // first column of each, or -1
   std::vector<std::string> names_;
-  MultiVector values_;
+  mutable MultiVector values_;
+  // The last step's velocity and mass (on slotsDofs_) while not yet copied into values_.
+  mutable Teuchos::RCP<const Vector> pendingVelocity_, pendingMass_;
   Teuchos::RCP<const Map> slotsDofs_, slotsNodes_;  // the maps slots_ was made for
   std::vector<LO> slots_;
 };

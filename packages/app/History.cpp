@@ -42,24 +42,74 @@ History<Dim>::History(const std::vector<std::string>& bodyNames,
     columns_.push_back(c);
 }
 
+namespace {
+
+// Per body: mass, momentum, smallest and largest position, per component.
+template <int Dim>
+struct BodySums {
+  std::vector<double> mass, sums, lows, highs;
+  explicit BodySums(std::size_t bodies)
+      : mass(bodies, 0.0),
+        sums(bodies * Dim, 0.0),
+        lows(bodies * Dim, std::numeric_limits<double>::infinity()),
+        highs(bodies * Dim, -std::numeric_limits<double>::infinity()) {}
+};
+
+// Particles come in runs of one body (bodies are seeded in turn, and migration moves
+// blocks): each run is summed in local variables, which the compiler keeps in registers,
+// then merged.  Two partial sums and extents (lanes) run side by side, so that the loop
+// does not wait on one chain of additions or comparisons.  (One accumulator per body,
+// updated through memory at every particle, cost as much as the residual's force sums.)
+template <int Dim, class Host>
+void addRun(const Host& host, std::size_t begin, std::size_t end, BodySums<Dim>& out) {
+  constexpr int lanes = 2;
+  const double inf = std::numeric_limits<double>::infinity();
+  double mass[lanes] = {}, sum[lanes][Dim] = {}, low[lanes][Dim], high[lanes][Dim];
+  for (int l = 0; l < lanes; ++l)
+    for (int d = 0; d < Dim; ++d)
+      low[l][d] = inf, high[l][d] = -inf;
+  const auto add = [&](int l, std::size_t p) {
+    mass[l] += host.mass(p);
+    for (int d = 0; d < Dim; ++d) {
+      sum[l][d] += host.mass(p) * host.v(p, d);
+      low[l][d] = std::min(low[l][d], host.x(p, d));
+      high[l][d] = std::max(high[l][d], host.x(p, d));
+    }
+  };
+  std::size_t p = begin;
+  for (; p + lanes <= end; p += lanes)
+    for (int l = 0; l < lanes; ++l)
+      add(l, p + l);
+  for (int l = 0; p < end; ++p, ++l)
+    add(l, p);
+  const int b = host.body(begin);
+  for (int l = 0; l < lanes; ++l) {
+    out.mass[b] += mass[l];
+    for (int d = 0; d < Dim; ++d) {
+      const std::size_t k = b * Dim + d;
+      out.sums[k] += sum[l][d];
+      out.lows[k] = std::min(out.lows[k], low[l][d]);
+      out.highs[k] = std::max(out.highs[k], high[l][d]);
+    }
+  }
+}
+
+}  // namespace
+
 template <int Dim>
 std::vector<double> History<Dim>::row(const StepRecord& r, double F0, double FL,
                                       const ParticleSet<Dim>& particles, const Comm& comm) const {
-  // Per body: mass, momentum, smallest and largest position, per component.
-  const double inf = std::numeric_limits<double>::infinity();
   const std::size_t n = bodies_ * Dim;
-  std::vector<double> mass(bodies_, 0.0), sums(n, 0.0), lows(n, inf), highs(n, -inf);
+  BodySums<Dim> local(bodies_);
   const auto host = particles.mirror(Kokkos::DefaultHostExecutionSpace());
-  for (std::size_t p = 0; p < particles.size(); ++p) {
-    const int b = host.body(p);
-    mass[b] += host.mass(p);
-    for (int d = 0; d < Dim; ++d) {
-      const std::size_t k = b * Dim + d;
-      sums[k] += host.mass(p) * host.v(p, d);
-      lows[k] = std::min(lows[k], host.x(p, d));
-      highs[k] = std::max(highs[k], host.x(p, d));
-    }
+  for (std::size_t begin = 0; begin < particles.size();) {
+    std::size_t end = begin + 1;
+    while (end < particles.size() && host.body(end) == host.body(begin))
+      ++end;
+    addRun<Dim>(host, begin, end, local);
+    begin = end;
   }
+  auto& [mass, sums, lows, highs] = local;
   std::vector<double> gmass(bodies_), gsums(n), glows(n), ghighs(n);
   const int count = static_cast<int>(n);
   Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, static_cast<int>(bodies_), mass.data(),

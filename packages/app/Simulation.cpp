@@ -16,6 +16,7 @@
 #include "app/History.hpp"
 #include "app/TimeIntegration.hpp"
 #include "assembly/Energy.hpp"
+#include "assembly/ParticleUpdate.hpp"
 #include "bc/RobinEnd.hpp"
 #include "core/Collective.hpp"
 #include "core/Errors.hpp"
@@ -160,6 +161,9 @@ void Simulation<Dim>::setUp(const Teuchos::ParameterList& deck) {
 
 template <int Dim>
 void Simulation<Dim>::addDerivedFields() {
+  // Total Lagrangian: the map stays on the reference domains; the deformed ones are drawn.
+  if (kinematics_ == Kinematics::totalLagrangian)
+    particles_.addDerivation([](ParticleSet<Dim>& ps) { followDeformation<Dim>(ps); });
   particles_.addDerivation([this](ParticleSet<Dim>& ps) {  // sigma_zz, an output-only field
     for (std::size_t m = 0; m < materials_.size(); ++m)
       materials_[m]->outOfPlaneStress(evaluationOf(ps, materials_, static_cast<int>(m), ps.F),
@@ -377,8 +381,12 @@ std::unique_ptr<Output<Dim>> Simulation<Dim>::startOutput(const History<Dim>& hi
     return output;  // the initial state is in the files already
   StepRecord initial;
   initial.kineticEnergy = kineticEnergy<Dim>(particles_, *comm_);
-  initial.strainEnergy = strainEnergy<Dim>(particles_, materials_, *comm_);
-  initial.dissipation = dissipatedEnergy<Dim>(particles_, materials_, *comm_);
+  {
+    const typename ParticleSet<Dim>::Scalars W("W", particles_.size()), D("D", particles_.size());
+    const auto energies = materialEnergies<Dim>(particles_, materials_, *comm_, W, D);
+    initial.strainEnergy = energies.strain;
+    initial.dissipation = energies.dissipated;
+  }
   initial.loadFactor = isStatic(deck_.sublist("Time Integration")) ? 0.0 : 1.0;
   const auto F0 = reactions();
   output->appendHistory(history.row(initial, F0[0], F0[1], particles_, *comm_));
@@ -441,6 +449,7 @@ std::vector<std::string> Simulation<Dim>::run() {
                    [&] { output->writeFields(r.time, particles_, gridFields_->values(), F); });
     }
     if (checkpoints.due(r.step, r.last)) {
+      particles_.updateDerived();  // the drawn domains, as the outputs have them
       writeCheckpoint(checkpoints, r.step, *stepper, *output);
       checkpointed = r.step;
     }
@@ -456,8 +465,10 @@ std::vector<std::string> Simulation<Dim>::run() {
     // After an accepted step, or in the middle of one (abandoned: nothing of it was
     // committed): the checkpoint is of the last accepted step.
     const auto& state = stepper->state();
-    if (checkpointed != state.step)
+    if (checkpointed != state.step) {
+      particles_.updateDerived();
       writeCheckpoint(checkpoints, state.step, *stepper, *output);
+    }
     throw RunStopped(state.step, state.time, !betweenSteps, checkpoints.pathOf(state.step));
   }
   return finish(finalTime, output->files(), stepper->layouts());

@@ -39,7 +39,8 @@ void stressRelativeToStepStart(Kinematics kinematics,
                                const typename ParticleSet<Dim, Space>::Tensors& Pn,
                                const Tangents<Dim, Space>& An) {
   if (kinematics == Kinematics::totalLagrangian) {
-    Kokkos::deep_copy(Pn, P);
+    if (Pn.data() != P.data())
+      Kokkos::deep_copy(Pn, P);
     if (An.data() != A.data())
       Kokkos::deep_copy(An, A);
     return;

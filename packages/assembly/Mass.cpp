@@ -109,6 +109,7 @@ void gridToParticleVelocity(const ParticleGridMap<Dim, Space>& map,
   auto phi = map.phi;
   auto v = particles.v;
   auto a = particles.a;
+  const bool pure = flip == 0.0;  // PIC: the old velocities are not read
   Kokkos::parallel_for(
       "impm::gridToParticleVelocity", RangePolicy<Space>(0, map.numParticles()),
       KOKKOS_LAMBDA(const int p) {
@@ -116,11 +117,12 @@ void gridToParticleVelocity(const ParticleGridMap<Dim, Space>& map,
           double change = 0, pic = 0, acc = 0;
           for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k) {
             const LO i = entryDofs(k) + d;
-            change += phi(k) * (vNew(i, 0) - vOld(i, 0));
+            if (!pure)
+              change += phi(k) * (vNew(i, 0) - vOld(i, 0));
             pic += phi(k) * vNew(i, 0);
             acc += phi(k) * aNew(i, 0);
           }
-          v(p, d) = flip * (v(p, d) + change) + (1.0 - flip) * pic;
+          v(p, d) = pure ? pic : flip * (v(p, d) + change) + (1.0 - flip) * pic;
           a(p, d) = acc;
         }
       });

@@ -40,24 +40,31 @@ void updateParticles(Kinematics kinematics, const ParticleGridMap<Dim, Space>& m
               s += P(p, a, c) * F(p, b, c);
             stress(p, a, b) = s / J;
           }
-        // The domain follows F with either kinematics (total Lagrangian: for output only,
-        // the map stays on domain0); the volume only where the particles move.
-        for (int a = 0; a < Dim; ++a)
-          for (int k = 0; k < Dim; ++k) {
-            double s = 0;
-            for (int c = 0; c < Dim; ++c)
-              s += F(p, a, c) * domain0(p, c, k);
-            domain(p, a, k) = s;
-          }
-        if (moves)
+        // Where the particles move, the domain follows F and the volume J (total
+        // Lagrangian: the map stays on domain0, and followDeformation draws the domain for
+        // output).
+        if (moves) {
+          deformedDomain<Dim>(F, domain0, domain, p);
           volume(p) = J * volume0(p);
+        }
       });
 }
 
-#define IMPM_INSTANTIATE(D)                                                          \
-  template void updateParticles<D, DefaultExecSpace>(                                \
-      Kinematics, const ParticleGridMap<D>&, const EntryDofs<>&, const LocalValues&, \
-      const ParticleSet<D>::Tensors&, const ParticleSet<D>::Tensors&, const ParticleSet<D>&);
+template <int Dim, class Space>
+void followDeformation(const ParticleSet<Dim, Space>& particles) {
+  auto F = particles.F;
+  auto domain = particles.domain;
+  auto domain0 = particles.domain0;
+  Kokkos::parallel_for(
+      "impm::followDeformation", RangePolicy<Space>(0, particles.size()),
+      KOKKOS_LAMBDA(const int p) { deformedDomain<Dim>(F, domain0, domain, p); });
+}
+
+#define IMPM_INSTANTIATE(D)                                                                   \
+  template void updateParticles<D, DefaultExecSpace>(                                         \
+      Kinematics, const ParticleGridMap<D>&, const EntryDofs<>&, const LocalValues&,          \
+      const ParticleSet<D>::Tensors&, const ParticleSet<D>::Tensors&, const ParticleSet<D>&); \
+  template void followDeformation<D, DefaultExecSpace>(const ParticleSet<D>&);
 IMPM_INSTANTIATE(1)
 IMPM_INSTANTIATE(2)
 #undef IMPM_INSTANTIATE

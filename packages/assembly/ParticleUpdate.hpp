@@ -3,10 +3,10 @@
 // u_p = sum_i phi_ip u_i (eq. 1.23) and the particle state is advanced:
 //   u_p += sum_i phi_ip du_i,  x_p += sum_i phi_ip du_i,  F_p = trial F,
 //   stress = P F^T / J (Cauchy; in 1-D the axial force per unit section);
-// the domains follow the deformation, domain = F domain0 (eq. 1.36 CPDI vectors), and with
-// updated-Lagrangian kinematics so does the volume, V_p = J V_p0.  (With total-Lagrangian
+// with updated-Lagrangian kinematics the domains follow the deformation, domain = F domain0
+// (eq. 1.36 CPDI vectors), and so does the volume, V_p = J V_p0.  (With total-Lagrangian
 // kinematics the map is built at X_p, the reference domains and volumes; domain is then
-// what the output draws.)
+// what the output draws, made by followDeformation before an output needs it.)
 
 #include "assembly/Kinematics.hpp"
 
@@ -18,5 +18,22 @@ void updateParticles(Kinematics kinematics, const ParticleGridMap<Dim, Space>& m
                      const typename ParticleSet<Dim, Space>::Tensors& F,
                      const typename ParticleSet<Dim, Space>::Tensors& P,
                      const ParticleSet<Dim, Space>& particles);
+
+// domain = F domain0 for every particle.
+template <int Dim, class Space = DefaultExecSpace>
+void followDeformation(const ParticleSet<Dim, Space>& particles);
+
+// domain_p = F_p domain0_p.
+template <int Dim, class Tensors>
+KOKKOS_INLINE_FUNCTION void deformedDomain(const Tensors& F, const Tensors& domain0,
+                                           const Tensors& domain, int p) {
+  for (int a = 0; a < Dim; ++a)
+    for (int k = 0; k < Dim; ++k) {
+      double s = 0;
+      for (int c = 0; c < Dim; ++c)
+        s += F(p, a, c) * domain0(p, c, k);
+      domain(p, a, k) = s;
+    }
+}
 
 }  // namespace impm

@@ -73,9 +73,10 @@ bool isFieldName(const std::string& name) {
 }
 
 // The framework's fields.  Derived fields (strain, J, sigma_zz) are recomputed before every
-// output, so they are neither checkpointed nor migrated; so is the external force, which
-// every step sets before it is used.  Column names and order are the output contract
-// of doc/design.md.
+// output, so they are neither checkpointed nor migrated.  The external force is set before
+// every step but not checkpointed; it migrates, because loads that stay the same numbers are
+// not set again (Bodies::applyLoads).  Column names and order are the output contract of
+// doc/design.md.
 template <int Dim>
 BuiltinFields<Dim>::BuiltinFields() {
   static_assert(Dim == 1 || Dim == 2, "BuiltinFields: the output columns of this dimension");
@@ -142,7 +143,7 @@ BuiltinFields<Dim>::BuiltinFields() {
       }
   material = field("material", scalar, "index of the material in the deck");
   force = field("force", vector, "external force on the particle");
-  force.checkpoint = force.migrate = false;
+  force.checkpoint = false;
   volume0 = field("volume0", scalar, "reference volume");
 }
 

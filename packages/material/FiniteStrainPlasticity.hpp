@@ -95,6 +95,7 @@ class FiniteStrainPlasticity : public Material<2> {
   void firstPiola(const Evaluation& at, Tensors& P, Tangents& A) const override;
   void energyDensity(const Evaluation& at, Scalars& W) const override;
   void dissipationDensity(const Evaluation& at, Scalars& D) const override;
+  bool dissipates() const override { return true; }
   void outOfPlaneStress(const Evaluation& at, Scalars& stressZZ) const override;
   double maxModulus(const Evaluation& /*at*/) const override {
     return parameters_.lambda + 2.0 * parameters_.mu;

@@ -80,6 +80,8 @@ class Material {
   // Energy dissipated per unit reference volume since the start (plastic work that is not
   // stored), from the committed state; history-free laws dissipate nothing and leave D.
   virtual void dissipationDensity(const Evaluation& /*at*/, Scalars& /*D*/) const {}
+  // True when dissipationDensity computes something (false: the energy history skips it).
+  virtual bool dissipates() const { return false; }
 
   // Out-of-plane Cauchy stress sigma_zz (2-D plane strain; output only).  Laws without one
   // leave it untouched.

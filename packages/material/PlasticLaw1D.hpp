@@ -46,6 +46,7 @@ class J2Law1D : public Material<1> {
   void firstPiola(const Evaluation& at, Tensors& P, Tangents& A) const override;
   void energyDensity(const Evaluation& at, Scalars& W) const override;
   void dissipationDensity(const Evaluation& at, Scalars& D) const override;
+  bool dissipates() const override { return true; }
   double maxModulus(const Evaluation& at) const override;
 
  private:

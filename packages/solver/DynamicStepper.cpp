@@ -25,9 +25,13 @@ std::string at(double t) {
   return s.str();
 }
 
-// x = a * x elementwise with the nodal mask (zero on extra unknowns).
-void maskExtras(Vector& x, const Vector& mask) {
-  x.elementWiseMultiply(1.0, mask, x, 0.0);
+// Zero on the extra unknowns (the few rows of boundary forces): no pass over the vector.
+void maskExtras(Vector& x, const std::vector<LO>& extraRows) {
+  if (extraRows.empty())
+    return;
+  auto values = x.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (const LO row : extraRows)
+    values(row, 0) = 0.0;
 }
 
 }  // namespace
@@ -82,7 +86,7 @@ Teuchos::RCP<Vector> DynamicStepper<Dim>::fromParticles(
   if (settings_.mass == MassType::consistent) {
     solveLinearSystem(*this->setup_.newton.linearSolveStrategy(),
                       system.massMatrix(MassType::consistent), *sum, *result);
-    maskExtras(*result, system.nodalMask());
+    maskExtras(*result, system.extraRows());
     return result;
   }
   // Nodes whose mass is round-off next to the largest carry no velocity.
@@ -211,7 +215,7 @@ Teuchos::RCP<Vector> DynamicStepper<Dim>::equilibriumAcceleration(GridSystem<Dim
     throw NumericalError("the initial acceleration could not be computed: " + report.failure);
   auto a = Teuchos::rcp(new Vector(system.unknownMap()));
   a->update(s.c0, *du, -s.rv, v, 0.0);
-  maskExtras(*a, system.nodalMask());
+  maskExtras(*a, system.extraRows());
   return a;
 }
 
@@ -219,15 +223,19 @@ template <int Dim>
 bool DynamicStepper<Dim>::solveStep(GridSystem<Dim>& system, const Acceleration& s, const Vector& v,
                                     const Vector& a, double dt, Teuchos::RCP<Vector>& du,
                                     NewtonReport& report) {
-  auto r = Teuchos::rcp(new Vector(system.unknownMap()));
-  r->update(s.rv, v, s.ra, a, 0.0);
-  maskExtras(*r, system.nodalMask());
+  // Vectors that an operation overwrites whole are not zeroed first (false).
+  auto r = Teuchos::rcp(new Vector(system.unknownMap(), false));
+  if (s.ra != 0.0)
+    r->update(s.rv, v, s.ra, a, 0.0);
+  else
+    r->scale(s.rv, v);  // central difference: a^n does not enter
+  maskExtras(*r, system.extraRows());
   system.setInertia({settings_.mass, s.c0, r});
   // Guess: the step's displacement if the acceleration stayed a^n.
   du = system.initialGuess();
-  Vector predictor(system.unknownMap());
+  Vector predictor(system.unknownMap(), false);
   predictor.update(dt, v, 0.5 * dt * dt, a, 0.0);
-  maskExtras(predictor, system.nodalMask());
+  maskExtras(predictor, system.extraRows());
   du->update(1.0, predictor, 1.0);
   system.imposeConstraints(*du);
   if (settings_.isExplicit() && system.hasDiagonalJacobian())
@@ -241,7 +249,7 @@ template <int Dim>
 bool DynamicStepper<Dim>::eliminate(GridSystem<Dim>& system, Vector& du,
                                     NewtonReport& report) const {
   IMPM_TIMER("explicit update");
-  Vector r(system.unknownMap()), step(system.unknownMap());
+  Vector r(system.unknownMap(), false), step(system.unknownMap(), false);
   report = NewtonReport();
   try {
     system.evaluate(du, &r, nullptr);
@@ -254,8 +262,6 @@ bool DynamicStepper<Dim>::eliminate(GridSystem<Dim>& system, Vector& du,
   }
   du.update(1.0, step, 1.0);
   report.linearIterations = {0};
-  const double size = du.norm2();
-  report.relativeUpdates = {size > 0 ? step.norm2() / size : 0.0};
   report.converged = true;
   return true;
 }
@@ -280,26 +286,26 @@ template <int Dim>
 void DynamicStepper<Dim>::integrate(const GridSystem<Dim>& system, const Acceleration& s, double h,
                                     const Vector& du, const Vector& v, const Vector& a,
                                     Teuchos::RCP<Vector>& vNew, Teuchos::RCP<Vector>& aNew) const {
-  aNew = Teuchos::rcp(new Vector(system.unknownMap()));
+  aNew = Teuchos::rcp(new Vector(system.unknownMap(), false));
   aNew->update(s.c0, du, -s.rv, v, 0.0);
-  aNew->update(-s.ra, a, 1.0);
-  maskExtras(*aNew, system.nodalMask());
-  vNew = Teuchos::rcp(new Vector(v, Teuchos::Copy));
-  if (settings_.isExplicit())
-    vNew->update(h, *aNew, 1.0);
-  else
+  if (s.ra != 0.0)
+    aNew->update(-s.ra, a, 1.0);
+  maskExtras(*aNew, system.extraRows());
+  if (settings_.isExplicit()) {
+    vNew = Teuchos::rcp(new Vector(system.unknownMap(), false));
+    vNew->update(1.0, v, h, *aNew, 0.0);
+  } else {
+    vNew = Teuchos::rcp(new Vector(v, Teuchos::Copy));
     vNew->update(h * (1 - settings_.gamma), a, h * settings_.gamma, *aNew, 1.0);
+  }
 }
 
 template <int Dim>
 double DynamicStepper<Dim>::conservedKineticEnergy(const Vector& mass, const Vector& v) const {
   // On a fixed grid with lumped mass the nodal 1/2 v^T M v; otherwise the particles' (equal
   // to it with the consistent mass).
-  if (fixedGrid_ && settings_.mass == MassType::lumped) {
-    Vector mv(v.getMap());
-    mv.elementWiseMultiply(1.0, mass, v, 0.0);
-    return 0.5 * mv.dot(v);
-  }
+  if (fixedGrid_ && settings_.mass == MassType::lumped)
+    return lumpedKineticEnergy(mass, v);
   return kineticEnergy<Dim>(this->setup_.particles, *this->setup_.ownership.comm());
 }
 
@@ -357,7 +363,7 @@ void DynamicStepper<Dim>::run(const StepCallback<Dim>& onStep) {
       u_->update(1.0, *du, 1.0);
       v_ = vNew, a_ = aNew;
     }
-    this->accept(record, StepGrid<Dim>{*system, *du, vNew.get(), mass.get()}, onStep);
+    this->accept(record, StepGrid<Dim>{*system, *du, vNew, mass}, onStep);
   }
 }
 

@@ -68,7 +68,7 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
       entryDofs_(layout_->entryDofs),
       graph_(layout_->graph),
       importer_(layout_->importer),
-      work_((workspace ? *workspace : ownWorkspace_).arrays(particles.size())),
+      work_((workspace ? *workspace : ownWorkspace_).arrays(particles.size(), kinematics)),
       trial_(particles, materials) {
   // Prescribed rows get the size of a stiffness diagonal (modulus h^(Dim-2)), so that they
   // neither dominate nor vanish in the preconditioner.
@@ -168,7 +168,7 @@ Teuchos::RCP<CrsMatrix> GridSystem<Dim>::createJacobian() const {
 
 template <int Dim>
 Teuchos::RCP<Vector> GridSystem<Dim>::toOverlap(const Vector& owned) const {
-  auto overlap = Teuchos::rcp(new Vector(dofs_.overlapMap()));
+  auto overlap = Teuchos::rcp(new Vector(dofs_.overlapMap(), false));  // every entry imported
   overlap->doImport(owned, *importer_, Tpetra::INSERT);
   return overlap;
 }
@@ -298,7 +298,7 @@ template <int Dim>
 Teuchos::RCP<Vector> GridSystem<Dim>::acceleration(const Vector& xOverlap) const {
   if (inertia_.c0 == 0.0)
     return Teuchos::null;
-  auto a = Teuchos::rcp(new Vector(dofs_.overlapMap()));
+  auto a = Teuchos::rcp(new Vector(dofs_.overlapMap(), false));  // overwritten whole
   a->update(inertia_.c0, xOverlap, -1.0, *inertiaOverlap_, 0.0);
   return a;
 }

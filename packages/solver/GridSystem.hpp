@@ -60,6 +60,7 @@ class GridSystem : public ResidualModel {
   Teuchos::RCP<CrsMatrix> massMatrix(MassType type) const;
   // 1 on nodal unknowns, 0 on extra unknowns.
   const Vector& nodalMask() const { return *layout_->nodalMask; }
+  const std::vector<LO>& extraRows() const { return layout_->extraRows; }
 
   Teuchos::RCP<const Map> unknownMap() const override { return dofs_.ownedMap(); }
   // Explicit steps, and linear materials whose step is linear in du (1-D, or total

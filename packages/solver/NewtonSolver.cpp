@@ -121,7 +121,6 @@ class IterationRecorder : public NOX::Observer {
     const double update = relativeUpdate(solver);
     report_.residualNorms.push_back(norm);
     report_.linearIterations.push_back(linear);
-    report_.relativeUpdates.push_back(update);
     if (log_)
       *log_ << indent_ << "newton " << std::setw(2) << report_.iterations()
             << "  |R| = " << std::scientific << std::setprecision(3) << norm

@@ -18,10 +18,9 @@ namespace impm {
 
 struct NewtonReport {
   bool converged = false;
-  std::vector<double> residualNorms;    // ||R|| before the first and after every iteration
-  std::vector<int> linearIterations;    // per Newton iteration
-  std::vector<double> relativeUpdates;  // ||dx|| / ||x|| per Newton iteration
-  std::string failure;                  // why it stopped, when not converged
+  std::vector<double> residualNorms;  // ||R|| before the first and after every iteration
+  std::vector<int> linearIterations;  // per Newton iteration
+  std::string failure;                // why it stopped, when not converged
 
   int iterations() const { return static_cast<int>(linearIterations.size()); }
   int totalLinearIterations() const;

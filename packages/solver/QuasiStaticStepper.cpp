@@ -48,7 +48,7 @@ void QuasiStaticStepper<Dim>::run(const StepCallback<Dim>& onStep) {
     record.loadFactor = lambdaTo;
     record.last = fullyLoaded(to);
     record.newton = report;
-    this->accept(record, StepGrid<Dim>{*system, *du, nullptr, nullptr}, onStep);
+    this->accept(record, StepGrid<Dim>{*system, *du, Teuchos::null, Teuchos::null}, onStep);
   }
 }
 

@@ -2,9 +2,10 @@
 // The per-particle arrays of a step (trial F, P and A, and P, A relative to the start of the
 // step), kept from one step to the next.  A and its push-forward An share one array (the
 // push-forward is done in place: A is not needed after it), which is 128 bytes a particle in
-// 2-D and 648 in 3-D.  They are allocated with room to spare and handed
-// out at the step's particle count, so that a step allocates nothing the last one had:
-// migration changes the count on a rank by a few particles per step.
+// 2-D and 648 in 3-D; so do P and Pn when there is no push-forward (total Lagrangian).  They are
+// allocated with room to spare and handed out at the step's particle count, so that a step
+// allocates nothing the last one had: migration changes the count on a rank by a few particles per
+// step.
 
 #include "assembly/Kinematics.hpp"
 
@@ -20,8 +21,9 @@ class StepWorkspace {
     Tangents<Dim> A, An;  // the same array
   };
 
-  // The arrays for n particles (their values are those the last step left).
-  Arrays arrays(std::size_t n);
+  // The arrays for n particles (their values are those the last step left).  With total-
+  // Lagrangian kinematics P relative to the step start is P itself: Pn shares P's array.
+  Arrays arrays(std::size_t n, Kinematics kinematics);
 
  private:
   Arrays buffers_;
@@ -48,10 +50,14 @@ View firstRows(View& buffer, const std::string& label, std::size_t n) {
 }
 
 template <int Dim>
-typename StepWorkspace<Dim>::Arrays StepWorkspace<Dim>::arrays(std::size_t n) {
+typename StepWorkspace<Dim>::Arrays StepWorkspace<Dim>::arrays(std::size_t n,
+                                                               Kinematics kinematics) {
   const auto A = firstRows(buffers_.A, "A, then relative to step start", n);
-  return {firstRows(buffers_.F, "trial F", n), firstRows(buffers_.P, "P", n),
-          firstRows(buffers_.Pn, "P relative to step start", n), A, A};
+  const auto P = firstRows(buffers_.P, "P", n);
+  const auto Pn = kinematics == Kinematics::totalLagrangian
+                      ? P
+                      : firstRows(buffers_.Pn, "P relative to step start", n);
+  return {firstRows(buffers_.F, "trial F", n), P, Pn, A, A};
 }
 
 }  // namespace impm

@@ -79,8 +79,10 @@ class Stepper {
   double nominal_, minimum_;
   StepWorkspace<Dim> workspace_;
   LayoutCache<Dim> layouts_;
-  typename ParticleSet<Dim>::Vectors uBefore_;  // kept from step to step, see firstRows
-  std::vector<double> supportForces_;           // of the step being accepted
+  // Kept from step to step, see firstRows: u before the step, the energy densities.
+  typename ParticleSet<Dim>::Vectors uBefore_;
+  typename ParticleSet<Dim>::Scalars energyDensity_, dissipationDensity_;
+  std::vector<double> supportForces_;  // of the step being accepted
 };
 
 }  // namespace impm

@@ -70,8 +70,8 @@ template <int Dim>
 struct StepGrid {
   const GridSystem<Dim>& system;
   const Vector& du;
-  const Vector* velocity;  // null in static steps
-  const Vector* mass;      // lumped nodal mass; null in static steps
+  Teuchos::RCP<const Vector> velocity;  // null in static steps
+  Teuchos::RCP<const Vector> mass;      // lumped nodal mass; null in static steps
 };
 
 template <int Dim>

@@ -89,8 +89,12 @@ std::shared_ptr<SystemLayout<Dim>> numberUnknowns(const NodeOwnership<Dim>& owne
   {
     auto m = mask->getLocalViewHost(Tpetra::Access::OverwriteAll);
     const auto& owned = *dofs.ownedMap();
-    for (std::size_t k = 0; k < owned.getNodeNumElements(); ++k)
-      m(k, 0) = dofs.isExtraDof(owned.getGlobalElement(static_cast<LO>(k))) ? 0.0 : 1.0;
+    for (std::size_t k = 0; k < owned.getNodeNumElements(); ++k) {
+      const bool extra = dofs.isExtraDof(owned.getGlobalElement(static_cast<LO>(k)));
+      m(k, 0) = extra ? 0.0 : 1.0;
+      if (extra)
+        l->extraRows.push_back(static_cast<LO>(k));
+    }
   }
   l->nodalMask = mask;
   checkEveryActiveNodeIsIntegrated(ownership.grid(), *l);

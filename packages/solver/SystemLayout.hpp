@@ -34,6 +34,7 @@ struct SystemLayout {
   EntryDofs<> entryDofs;  // overlap-map index of each map entry's node
   Teuchos::RCP<const Import> importer;
   Teuchos::RCP<const Vector> nodalMask;      // 1 on nodal unknowns, 0 on extra unknowns
+  std::vector<LO> extraRows;                 // the owned rows of extra unknowns
   std::vector<std::pair<GO, GO>> couplings;  // the contributions' and the padding's entries
   Teuchos::RCP<FECrsGraph> graph;
 };

@@ -94,6 +94,12 @@ TEST(ParticleUpdate, MovesParticlesWithTheGridAndScalesDomains) {
     EXPECT_NEAR(r(p, 0, 0), Fp * 0.07, 1e-14);  // r = F r0
     EXPECT_NEAR(s(p, 0, 0), 3.0, 1e-14);        // 1-D: P F / J = P
   }
+  // Total Lagrangian: the domain is drawn for output from the particles' F alone.
+  Kokkos::deep_copy(f.ps.domain, 0.0);
+  followDeformation<1>(f.ps);
+  Kokkos::deep_copy(r, f.ps.domain);
+  for (int p = 0; p < 6; ++p)
+    EXPECT_NEAR(r(p, 0, 0), 1.2 * (1.0 + 0.1 * p) * 0.07, 1e-14);
 }
 
 TEST(Forces, InternalForceSumsToZero) {
