@@ -254,13 +254,12 @@ bool DynamicStepper<Dim>::eliminate(GridSystem<Dim>& system, Vector& du,
   try {
     system.evaluate(du, &r, nullptr);
     report.residualNorms = {r.norm2()};
-    r.scale(-1.0);
-    system.explicitElimination().solve(r, step);
+    system.explicitElimination().solve(r, step);  // J^-1 R: linear, so its sign is taken below
   } catch (const NumericalError& e) {
     report.failure = e.what();
     return false;
   }
-  du.update(1.0, step, 1.0);
+  du.update(-1.0, step, 1.0);
   report.linearIterations = {0};
   report.converged = true;
   return true;
