@@ -18,12 +18,17 @@ class Run:
     """One impm process: wall time [s], peak memory of the largest process [MB], the Teuchos
     timers by name [s] and the rows of the history CSV."""
 
-    def __init__(self, wall, memory, timers, history, rms=None):
+    def __init__(self, wall, memory, timers, history, rms=None, calls=None):
         self.wall, self.memory, self.timers, self.history = wall, memory, timers, history
         self.rms = rms  # the RMS displacement error impm reported, as printed
+        self.calls = calls or {}  # each timer's call count (several ranks: the minimum's)
 
     def timer(self, name):
         return self.timers.get(name, 0.0)
+
+    def per_call(self, name):
+        """A timer's mean time per call [s] (0 when it never ran)."""
+        return self.timer(name) / self.calls[name] if self.calls.get(name) else 0.0
 
 
 def run_impm(impm, deck, sets, np=1, history=True, timeout=None):
@@ -52,19 +57,20 @@ def run_impm(impm, deck, sets, np=1, history=True, timeout=None):
         shutil.rmtree(out, ignore_errors=True)
         raise SystemExit("impm failed: %s\n%s%s" % (" ".join(cmd), r.stdout, r.stderr))
     rss = r.stderr.strip().splitlines()[-1].split()[1]
-    timers = {}
+    timers, calls = {}, {}
     for m in re.finditer(r"^impm: ([A-Za-z -]+?)\s+([0-9.eE+-]+ \(.*)$", r.stdout, re.M):
         # One rank: "time (calls)"; several: min, mean, max over ranks, then the mean over
         # call counts.  The slowest rank's time is the one that counts.
-        values = re.findall(r"([0-9.eE+-]+) \(", m.group(2))
-        timers[m.group(1)] = float(values[2] if len(values) >= 3 else values[0])
+        values = re.findall(r"([0-9.eE+-]+) \(([0-9.eE+-]+)\)", m.group(2))
+        timers[m.group(1)] = float(values[2][0] if len(values) >= 3 else values[0][0])
+        calls[m.group(1)] = float(values[0][1])
     rows = []
     if history:
         name = os.path.splitext(os.path.basename(deck))[0] + "_history.csv"
         rows = list(csv.DictReader(open(os.path.join(out, name))))
     shutil.rmtree(out)
     rms = re.search(r"RMS displacement error (\S+)", r.stdout)
-    return Run(wall, int(rss) / 1024.0, timers, rows, rms.group(1) if rms else None)
+    return Run(wall, int(rss) / 1024.0, timers, rows, rms.group(1) if rms else None, calls)
 
 
 def median_run(runs, key):
