@@ -86,7 +86,7 @@ class Bodies {
     bool all = true;  // false: a formula, or a value that is not finite
     double bodyForce[Dim] = {}, load = 0.0;
     bool operator==(const ConstantLoads& o) const {
-      return all && o.all && load == o.load && std::equal(bodyForce, bodyForce + Dim, o.bodyForce);
+      return all == o.all && load == o.load && std::equal(bodyForce, bodyForce + Dim, o.bodyForce);
     }
   };
   std::vector<ConstantLoads> constantLoads() const;

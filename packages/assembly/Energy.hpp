@@ -19,11 +19,11 @@ struct MaterialEnergies {
   double dissipated = 0.0;  // energy dissipated since the start (plastic work not stored)
 };
 
-// Both sums in one pass.  W and D are scratch arrays of at least the particle count (the
-// stepper keeps them from step to step: allocating them cost more than the sums).
 // 1/2 v^T M v with a lumped (diagonal) M given as a vector: the grid's kinetic energy.
 double lumpedKineticEnergy(const Vector& mass, const Vector& v);
 
+// Both sums in one pass.  W and D are scratch arrays of at least the particle count (the
+// stepper keeps them from step to step: allocating them cost more than the sums).
 template <int Dim>
 MaterialEnergies materialEnergies(const ParticleSet<Dim>& particles,
                                   const Materials<Dim>& materials, const Comm& comm,

@@ -9,6 +9,7 @@
 #include <Teuchos_DefaultComm.hpp>
 
 #include "app/Bodies.hpp"
+#include "app/GridFields.hpp"
 #include "app/Output.hpp"
 #include "app/shapes/Mesh.hpp"
 #include "core/Errors.hpp"
@@ -16,6 +17,8 @@
 #include "core/Parameters.hpp"
 #include "io/MeshFile.hpp"
 #include "material/MaterialFactory.hpp"
+#include "material/MaterialState.hpp"
+#include "solver/GridSystem.hpp"
 
 namespace impm {
 namespace {
@@ -201,6 +204,87 @@ TEST(Output, FieldsAreSelectedFromTheRegistry) {
               std::string::npos)
         << e.what();
   }
+}
+
+// The grid output's fields: the displacement sums the steps' increments; the velocity and
+// mass are the last step's, copied in only when read (an output or a checkpoint), also when
+// the unknowns changed since (a step on other nodes: the step before's values are copied on
+// the unknowns they were made for, and the nodes without unknown read 0).
+TEST(GridFields, DisplacementAccumulatesVelocityAndMassAreTheLastSteps) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  NodeOwnership<1> own(makeGridGeometry<1>({0.0}, {1.0}, {8}), comm);
+  // The bar [0, upper] by fem, its particles and laws kept with the system that reads them.
+  struct Bar {
+    Materials<1> mats;
+    ParticleSet<1> ps;
+    std::unique_ptr<GridSystem<1>> system;
+  };
+  const auto bar = [&](double upper) {
+    const auto deck = deckWithBar(0.0, upper, 2);
+    Bodies<1> bodies(deck, {"steel"}, own.grid());
+    auto b = std::make_unique<Bar>();
+    b->mats = {createMaterial<1>("steel", deck.sublist("Materials").sublist("steel"))};
+    b->ps =
+        bodies.createParticles(Method::fem, own.decomposition(), comm->getRank(), b->mats, true);
+    declareMaterialVariables(b->ps, b->mats), initializeMaterials(b->ps, b->mats, true);
+    b->system =
+        std::make_unique<GridSystem<1>>(own, Method::fem, Kinematics::totalLagrangian, b->ps,
+                                        b->mats, GridSystem<1>::Contributions{}, 1.0, 1.0);
+    return b;
+  };
+  // The values of a step, a function of the node and the step; the extra unknowns carry none.
+  const auto stepVector = [](const GridSystem<1>& s, double step, double scale) {
+    auto v = Teuchos::rcp(new Vector(s.unknownMap()));
+    auto data = v->getDataNonConst();
+    for (decltype(data.size()) k = 0; k < data.size(); ++k)
+      data[k] = scale * (s.unknownMap()->getGlobalElement(k) + 10 * step);
+    return v;
+  };
+  const auto wholeBar = bar(1.0), halfBar = bar(0.5);
+  const auto &whole = wholeBar->system, &half = halfBar->system;  // nodes 0..8, then 0..4
+  GridFields<1> fields(own, true, true);
+  const auto read = [&](int column) {
+    std::vector<double> at;
+    const auto& output = fields;  // as the output files read it
+    auto values = output.values().getData(column);
+    for (decltype(values.size()) n = 0; n < values.size(); ++n)
+      at.push_back(values[n]);
+    return at;
+  };
+  const auto stepOn = [&](const GridSystem<1>& s, double step) {
+    const auto du = stepVector(s, step, 1e-3);
+    fields.update(StepGrid<1>{s, *du, stepVector(s, step, 1.0), stepVector(s, step, -2.0)});
+  };
+  const auto& nodes = *own.nodeMap();
+  stepOn(*whole, 1), stepOn(*whole, 2);
+  const auto u2 = read(0), v2 = read(1), m2 = read(2);
+  for (std::size_t n = 0; n < u2.size(); ++n) {
+    const double node = nodes.getGlobalElement(n);
+    EXPECT_NEAR(u2[n], 1e-3 * (2 * node + 30), 1e-15) << node;
+    EXPECT_EQ(v2[n], node + 20) << node;
+    EXPECT_EQ(m2[n], -2 * (node + 20)) << node;
+  }
+  EXPECT_EQ(read(1), v2);  // reading again copies nothing new
+  // Two steps on the half bar's nodes, the first not read: the last one's values count.
+  stepOn(*half, 3), stepOn(*half, 4);
+  const auto u4 = read(0), v4 = read(1), m4 = read(2);
+  for (std::size_t n = 0; n < u4.size(); ++n) {
+    const double node = nodes.getGlobalElement(n);
+    const bool active = node <= 4;
+    EXPECT_NEAR(u4[n], u2[n] + (active ? 1e-3 * (2 * node + 70) : 0.0), 1e-15) << node;
+    EXPECT_EQ(v4[n], active ? node + 40 : 0.0) << node;
+    EXPECT_EQ(m4[n], active ? -2 * (node + 40) : 0.0) << node;
+  }
+  // A step on other unknowns after one that was never read: back on the whole bar.
+  stepOn(*half, 5), stepOn(*whole, 6);
+  const auto v6 = read(1);
+  for (std::size_t n = 0; n < v6.size(); ++n)
+    EXPECT_EQ(v6[n], nodes.getGlobalElement(n) + 60.0);
+  // A restart writes into the values: they hold the last step's before it does.
+  stepOn(*whole, 7);
+  auto restored = fields.values().getData(1);
+  for (decltype(restored.size()) n = 0; n < restored.size(); ++n)
+    EXPECT_EQ(restored[n], nodes.getGlobalElement(n) + 70.0);
 }
 
 }  // namespace

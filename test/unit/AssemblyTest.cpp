@@ -7,6 +7,7 @@
 
 #include <Teuchos_DefaultComm.hpp>
 
+#include "assembly/Energy.hpp"
 #include "assembly/EntryDofs.hpp"
 #include "assembly/Forces.hpp"
 #include "assembly/Graph.hpp"
@@ -56,6 +57,37 @@ struct Fixture {
     return du;
   }
 };
+
+// The body forces' work over a step, sum_p f_p . (u_p - u_p^before) over all ranks, and the
+// test that lets a rank whose particles carry no force skip it: any non-zero component
+// counts, however small (a subnormal one), a negative zero does not (it does no work).
+TEST(Energy, BodyForceWorkIsSkippedOnlyWithoutForces) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  ParticleSet<2> ps(5);
+  ParticleSet<2>::Vectors before("u before", 5);
+  auto f = Kokkos::create_mirror_view(ps.force);
+  auto u = Kokkos::create_mirror_view(ps.u), u0 = Kokkos::create_mirror_view(before);
+  const auto carries = [&](double f31) {
+    f(3, 1) = f31;
+    Kokkos::deep_copy(ps.force, f);
+    return carriesForces(ps);
+  };
+  EXPECT_FALSE(carries(0.0));
+  EXPECT_FALSE(carries(-0.0));
+  EXPECT_TRUE(carries(-1e-310));
+  double work = 0.0;
+  for (int p = 0; p < 5; ++p)
+    for (int d = 0; d < 2; ++d) {
+      f(p, d) = 1.0 + p - 2.0 * d, u(p, d) = 0.5 * p + d, u0(p, d) = 0.25 * d;
+      work += f(p, d) * (u(p, d) - u0(p, d));
+    }
+  Kokkos::deep_copy(ps.force, f), Kokkos::deep_copy(ps.u, u), Kokkos::deep_copy(before, u0);
+  const double ranks = comm->getSize();
+  EXPECT_NEAR(bodyForceWork<2>(ps, before, true, 3.0, *comm), 3.0 * ranks * work, 1e-12);
+  // Without forces on rank 0 the others' work is still summed (the call stays collective).
+  const bool loaded = comm->getRank() != 0;
+  EXPECT_NEAR(bodyForceWork<2>(ps, before, loaded, 1.0, *comm), (ranks - 1) * work, 1e-12);
+}
 
 TEST(Kinematics, LinearGridFieldGivesHomogeneousDeformation) {
   for (Method method : {Method::mpm, Method::gimp, Method::cpdi}) {
