@@ -232,7 +232,8 @@ TEST(GridFields, DisplacementAccumulatesVelocityAndMassAreTheLastSteps) {
                                         b->mats, GridSystem<1>::Contributions{}, 1.0, 1.0);
     return b;
   };
-  // The values of a step, a function of the node and the step; the extra unknowns carry none.
+  // The values of a step, a function of the node and the step (no Robin end here: every
+  // unknown is a node's).
   const auto stepVector = [](const GridSystem<1>& s, double step, double scale) {
     auto v = Teuchos::rcp(new Vector(s.unknownMap()));
     auto data = v->getDataNonConst();
