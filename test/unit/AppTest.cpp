@@ -1,5 +1,6 @@
 // app: integration points from bodies (material points and FEM Gauss points, cut cells
-// included), ids independent of the rank count, and output gathered by id.
+// included), ids independent of the rank count, output gathered by id, and the grid
+// output's fields.
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,6 @@
 // assembly: the deformation gradient from grid displacements (both kinematics), the
-// grid-to-particle update (eq. 1.23), and the internal force's translation invariance.
+// grid-to-particle update (eq. 1.23), the internal force's translation invariance, and the
+// body forces' work.
 
 #include <gtest/gtest.h>
 
