@@ -2,6 +2,7 @@
 
 #include <cstring>
 
+#include "assembly/Energy.hpp"
 #include "assembly/Forces.hpp"
 #include "basis/CornerWeights.hpp"
 #include "core/Collective.hpp"
@@ -70,6 +71,9 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
       importer_(layout_->importer),
       work_((workspace ? *workspace : ownWorkspace_).arrays(particles.size(), kinematics)),
       trial_(particles, materials) {
+  overlapIsOwned_ = ownership.comm()->getSize() == 1 && dofs_.overlapMap()->getNodeNumElements() ==
+                                                            dofs_.ownedMap()->getNodeNumElements();
+  loaded_ = carriesForces<Dim>(particles_);
   // Prescribed rows get the size of a stiffness diagonal (modulus h^(Dim-2)), so that they
   // neither dominate nor vanish in the preconditioner.
   double modulus = 0.0;
@@ -167,7 +171,17 @@ Teuchos::RCP<CrsMatrix> GridSystem<Dim>::createJacobian() const {
 }
 
 template <int Dim>
-Teuchos::RCP<Vector> GridSystem<Dim>::toOverlap(const Vector& owned) const {
+void GridSystem<Dim>::setTime(double time, double loadFactor) {
+  time_ = time, loadFactor_ = loadFactor;
+  loaded_ = carriesForces<Dim>(particles_);
+}
+
+template <int Dim>
+Teuchos::RCP<const Vector> GridSystem<Dim>::toOverlap(const Vector& owned) const {
+  // The overlap map begins with the owned map (core/DofMap.hpp): where it is no longer,
+  // the owned values are the overlap values.
+  if (overlapIsOwned_)
+    return owned.offsetView(dofs_.overlapMap(), 0);
   auto overlap = Teuchos::rcp(new Vector(dofs_.overlapMap(), false));  // every entry imported
   overlap->doImport(owned, *importer_, Tpetra::INSERT);
   return overlap;
@@ -296,7 +310,7 @@ typename GridSystem<Dim>::Trial GridSystem<Dim>::trialState(const Vector& x) {
 
 template <int Dim>
 Teuchos::RCP<Vector> GridSystem<Dim>::acceleration(const Vector& xOverlap) const {
-  if (inertia_.c0 == 0.0)
+  if (inertia_.c0 == 0.0 || inertia_.mass == MassType::lumped)
     return Teuchos::null;
   auto a = Teuchos::rcp(new Vector(dofs_.overlapMap(), false));  // overwritten whole
   a->update(inertia_.c0, xOverlap, -1.0, *inertiaOverlap_, 0.0);
@@ -313,7 +327,8 @@ void GridSystem<Dim>::assembleResidual(const Vector& xOverlap, Vector& residual)
   {
     auto local = f.getLocalViewDevice(Tpetra::Access::ReadWrite);
     addInternalForce<Dim>(particleGridMap_, entryDofs_, particles_, work_.Pn, local);
-    addExternalForce<Dim>(particleGridMap_, entryDofs_, particles_.force, loadFactor_, local);
+    if (loaded_)
+      addExternalForce<Dim>(particleGridMap_, entryDofs_, particles_.force, loadFactor_, local);
     if (a)
       addInertiaForce<Dim>(inertia_.mass, particleGridMap_, entryDofs_, particles_.mass,
                            a->getLocalViewDevice(Tpetra::Access::ReadOnly), local);
@@ -326,6 +341,21 @@ void GridSystem<Dim>::assembleResidual(const Vector& xOverlap, Vector& residual)
   }
   f.endAssembly();
   Tpetra::deep_copy(residual, *f.getVector(0));
+  if (inertia_.c0 != 0.0 && inertia_.mass == MassType::lumped)
+    addLumpedInertia(xOverlap, residual);
+}
+
+template <int Dim>
+void GridSystem<Dim>::addLumpedInertia(const Vector& xOverlap, Vector& residual) const {
+  // The owned rows come first on the overlap map (core/DofMap.hpp).
+  const auto x = xOverlap.getLocalViewDevice(Tpetra::Access::ReadOnly);
+  const auto r = inertia_.r->getLocalViewDevice(Tpetra::Access::ReadOnly);
+  const auto m = lumpedMass()->getLocalViewDevice(Tpetra::Access::ReadOnly);
+  const auto f = residual.getLocalViewDevice(Tpetra::Access::ReadWrite);
+  const double c0 = inertia_.c0;
+  Kokkos::parallel_for(
+      "impm::lumpedInertia", RangePolicy<DefaultExecSpace>(0, f.extent(0)),
+      KOKKOS_LAMBDA(const LO k) { f(k, 0) += m(k, 0) * (c0 * x(k, 0) - r(k, 0)); });
 }
 
 template <int Dim>
@@ -349,14 +379,13 @@ void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jac
   }
   if (jacobian) {
     IMPM_TIMER("Jacobian");
-    const auto acceleration = this->acceleration(*xo);
     auto xHost = xo->getLocalViewHost(Tpetra::Access::ReadOnly);
     auto& J = dynamic_cast<FECrsMatrix&>(*jacobian);
     J.beginAssembly();
     J.setAllToScalar(0.0);
     if (!frozen_)
       addTangent<Dim>(particleGridMap_, entryDofs_, particles_, work_.An, J.getLocalMatrixDevice());
-    if (acceleration)
+    if (inertia_.c0 != 0.0)
       addMassMatrix<Dim>(inertia_.mass, inertia_.c0, particleGridMap_, entryDofs_, particles_.mass,
                          J.getLocalMatrixDevice());
     for (std::size_t c = 0; c < contributions_.size(); ++c)
@@ -404,7 +433,7 @@ std::vector<GO> GridSystem<Dim>::extraDofs() const {
 template <int Dim>
 void GridSystem<Dim>::setInertia(const Inertia& inertia) {
   inertia_ = inertia;
-  inertiaOverlap_ = toOverlap(*inertia.r);
+  inertiaOverlap_ = inertia.mass == MassType::consistent ? toOverlap(*inertia.r) : Teuchos::null;
 }
 
 template <int Dim>
@@ -421,7 +450,9 @@ Teuchos::RCP<Vector> GridSystem<Dim>::particleToGrid(
 }
 
 template <int Dim>
-Teuchos::RCP<Vector> GridSystem<Dim>::lumpedMass() const {
+Teuchos::RCP<const Vector> GridSystem<Dim>::lumpedMass() const {
+  if (lumpedMass_)
+    return lumpedMass_;
   FEMultiVector m(dofs_.ownedMap(), importer_, 1);
   m.beginAssembly();
   addLumpedMass<Dim>(particleGridMap_, entryDofs_, particles_.mass,
@@ -429,6 +460,7 @@ Teuchos::RCP<Vector> GridSystem<Dim>::lumpedMass() const {
   m.endAssembly();
   auto result = Teuchos::rcp(new Vector(dofs_.ownedMap()));
   Tpetra::deep_copy(*result, *m.getVector(0));
+  lumpedMass_ = result;
   return result;
 }
 

@@ -38,7 +38,9 @@ class GridSystem : public ResidualModel {
              const Contributions& contributions, double time, double loadFactor,
              StepWorkspace<Dim>* workspace = nullptr, LayoutCache<Dim>* layouts = nullptr);
 
-  // The inertia term M a of a dynamic step, a = c0 du - r on the nodal unknowns.
+  // The inertia term M a of a dynamic step, a = c0 du - r on the nodal unknowns.  With the
+  // lumped mass, M a is m_i a_i on the owned rows (lumpedMass()): one pass over the grid
+  // instead of one over the particles.
   struct Inertia {
     MassType mass = MassType::lumped;
     double c0 = 0.0;
@@ -49,13 +51,19 @@ class GridSystem : public ResidualModel {
   // and contributes nothing to the Jacobian.
   void freezeInternalForce(bool frozen) { frozen_ = frozen; }
   // The time at the end of the step and the load factor (a system built at reference
-  // positions serves every step of a total-Lagrangian run).
-  void setTime(double time, double loadFactor) { time_ = time, loadFactor_ = loadFactor; }
+  // positions serves every step of a total-Lagrangian run).  Like the constructor, it reads
+  // whether the particles carry forces: the loads of the step are applied before.
+  void setTime(double time, double loadFactor);
+  // Whether a particle of this rank carries a force (assembly/Energy.hpp), as read when the
+  // system was built or its time last set.  A rank without forces skips the external force.
+  bool particlesCarryForces() const { return loaded_; }
 
   // Particle to grid on unknownMap(): sum_p m_p phi_ip q_p (momentum for q = v).
   Teuchos::RCP<Vector> particleToGrid(const typename ParticleSet<Dim>::Vectors& q) const;
-  // The lumped mass m_i = sum_p m_p phi_ip on unknownMap() (0 on extra unknowns).
-  Teuchos::RCP<Vector> lumpedMass() const;
+  // The lumped mass m_i = sum_p m_p phi_ip on unknownMap() (0 on extra unknowns), summed
+  // once: the particles' masses and the map do not change while a system lives.  Collective
+  // the first time.
+  Teuchos::RCP<const Vector> lumpedMass() const;
   // The mass matrix, with 1 on the diagonal of the extra unknowns so that it can be solved.
   Teuchos::RCP<CrsMatrix> massMatrix(MassType type) const;
   // 1 on nodal unknowns, 0 on extra unknowns.
@@ -88,8 +96,10 @@ class GridSystem : public ResidualModel {
   // Sets the prescribed unknowns of x to their prescribed increments (a guess must meet them,
   // see eliminateConstrained).
   void imposeConstraints(Vector& x) const;
-  // Overlap values of an owned vector.
-  Teuchos::RCP<Vector> toOverlap(const Vector& owned) const;
+  // Overlap values of an owned vector.  Where the overlap map is the owned one (one rank
+  // whose contributions reach no other unknowns) they are the owned vector's own, not a
+  // copy: read them before the owned vector changes.  Collective otherwise.
+  Teuchos::RCP<const Vector> toOverlap(const Vector& owned) const;
   // The step converged at x: the contributions and the materials commit their state (after
   // trialState(x), whose stress then serves as the next step's start where it is the same:
   // see startStressKept()).  Collective.
@@ -128,8 +138,11 @@ class GridSystem : public ResidualModel {
   // step start is P itself) and no law with a trial state (re-evaluating a return map from
   // its committed state could differ by round-off).
   bool startStressKept() const;
-  // c0 du - r on the overlap map in dynamic steps (the acceleration), null in static ones.
+  // c0 du - r on the overlap map in dynamic steps with the consistent mass (the
+  // acceleration), null otherwise.
   Teuchos::RCP<Vector> acceleration(const Vector& xOverlap) const;
+  // The residual's m_i (c0 du_i - r_i) on the owned rows, with the lumped mass.
+  void addLumpedInertia(const Vector& xOverlap, Vector& residual) const;
   // f_int - f_ext (+ M a) + the contributions' terms at x (given on the overlap map),
   // without the constrained rows.
   void assembleResidual(const Vector& xOverlap, Vector& residual) const;
@@ -171,7 +184,11 @@ class GridSystem : public ResidualModel {
   const Teuchos::RCP<FECrsGraph>& graph_;
   const Teuchos::RCP<const Import>& importer_;
   Inertia inertia_;
-  Teuchos::RCP<Vector> inertiaOverlap_;  // r on the overlap map
+  Teuchos::RCP<const Vector> inertiaOverlap_;  // r on the overlap map (consistent mass only)
+  mutable Teuchos::RCP<const Vector> lumpedMass_;
+  // Whether the overlap map is the owned map (see toOverlap).
+  bool overlapIsOwned_ = false;
+  bool loaded_ = true;  // particlesCarryForces()
   bool frozen_ = false;
   // Whether work_ holds the stress at the step start (du = 0, what a frozen internal force
   // uses): evaluated there, or the particle update's committed by commit().

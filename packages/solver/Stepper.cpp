@@ -67,7 +67,7 @@ void Stepper<Dim>::gridToParticles(GridSystem<Dim>& system, const Vector& du, do
   // The body forces' work over the step needs u before it, unless the rank's particles
   // carry no force (no loads): then the copy and the sum, which cost as much as a quarter
   // of an explicit step, are not made.
-  const bool loaded = carriesForces(particles);
+  const bool loaded = system.particlesCarryForces();
   const auto uBefore = firstRows(uBefore_, "u before the step", loaded ? particles.size() : 0);
   if (loaded)
     Kokkos::deep_copy(uBefore, particles.u);

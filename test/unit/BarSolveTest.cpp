@@ -5,8 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <functional>
 #include <limits>
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultComm.hpp>
 
 #include "bc/DirichletNodes.hpp"
@@ -276,6 +279,120 @@ TEST(GridSystem, PrescribedUnknownsKeepTheJacobianSymmetric) {
       // Measured: below 1e-16; with the columns kept, 3e-3 to 9e-2.
       EXPECT_LT(asymmetry, 1e-13) << law << ", " << methodName(method);
     }
+}
+
+}  // namespace
+}  // namespace impm
+
+namespace impm {
+namespace {
+
+// R(x) with the inertia (mass, c0, r), for the acceleration a = c0 x - r given per row.
+Vector residualWith(GridSystem<1>& system, MassType mass, const Vector& x,
+                    const std::function<double(GO)>& a) {
+  const double c0 = 4.0;
+  auto r = Teuchos::rcp(new Vector(system.unknownMap()));
+  {
+    auto xv = x.getLocalViewHost(Tpetra::Access::ReadOnly);
+    auto rv = r->getLocalViewHost(Tpetra::Access::ReadWrite);
+    for (std::size_t k = 0; k < rv.extent(0); ++k)
+      rv(k, 0) = c0 * xv(k, 0) - a(system.unknownMap()->getGlobalElement(static_cast<LO>(k)));
+  }
+  system.setInertia({mass, c0, r});
+  Vector R(system.unknownMap());
+  system.evaluate(x, &R, nullptr);
+  return R;
+}
+
+// The lumped inertia, m_i a_i on the grid, against the consistent mass's sum over the
+// particles: for a uniform acceleration the two are the same (the rows of the consistent
+// mass sum to the lumped one), and m_i then weighs any acceleration row by row.  On one rank
+// the overlap values are the owned vector's own, on two they are imported.
+TEST(GridSystem, LumpedInertiaIsTheParticlesMassTimesTheAcceleration) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  NodeOwnership<1> own(makeGridGeometry<1>({0.0}, {1.0}, {8}), comm);
+  for (Method method : {Method::fem, Method::gimp}) {
+    auto ps = barPoints(own, method, Formula(0.0));
+    {
+      auto X = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.X);
+      auto V = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.volume);
+      auto m = Kokkos::create_mirror_view(ps.mass);
+      for (std::size_t p = 0; p < ps.size(); ++p)
+        m(p) = (1.0 + X(p, 0)) * V(p);
+      Kokkos::deep_copy(ps.mass, m);
+    }
+    Teuchos::ParameterList mat;
+    mat.set("Model", std::string("linear")), mat.set("E", std::string("1 + x"));
+    validateParameters(mat, materialValidParameters());
+    Materials<1> materials = {createMaterial<1>("m", mat)};
+    declareMaterialVariables(ps, materials), initializeMaterials(ps, materials, true);
+    std::vector<std::shared_ptr<Contribution<1>>> bcs = {robin("left", 0, 1, 0, 0.0),
+                                                         robin("right", 1, 0, 1, 1.0)};
+    GridSystem<1> system(own, method, Kinematics::totalLagrangian, ps, materials, bcs, 1.0, 1.0);
+    Vector x(system.unknownMap());
+    x.randomize(-0.01, 0.01);
+    Vector R0(system.unknownMap());
+    system.evaluate(x, &R0, nullptr);
+    const auto one = [](GO) { return 1.0; };
+    const auto varying = [](GO dof) { return 1.0 + 0.5 * std::sin(1.0 + dof); };
+    Vector consistent = residualWith(system, MassType::consistent, x, one);
+    Vector lumped = residualWith(system, MassType::lumped, x, one);
+    Vector weighed = residualWith(system, MassType::lumped, x, varying);
+    for (Vector* v : {&consistent, &lumped, &weighed})
+      v->update(-1.0, R0, 1.0);  // M a alone
+    const auto mass = system.lumpedMass();
+    auto c = consistent.getData(), l = lumped.getData(), w = weighed.getData(), m = mass->getData();
+    double total = 0.0;
+    for (decltype(c.size()) k = 0; k < c.size(); ++k) {
+      const GO dof = system.unknownMap()->getGlobalElement(static_cast<LO>(k));
+      EXPECT_NEAR(l[k], c[k], 1e-14) << methodName(method) << " dof " << dof;
+      EXPECT_NEAR(m[k], c[k], 1e-14) << methodName(method) << " dof " << dof;
+      EXPECT_NEAR(w[k], c[k] * varying(dof), 1e-14) << methodName(method) << " dof " << dof;
+      total += m[k];
+    }
+    // The bar's mass: the integral of 1 + x over [0, 1] (exact for both quadratures).
+    double sum = 0.0;
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, total, Teuchos::outArg(sum));
+    EXPECT_NEAR(sum, 1.5, 1e-14) << methodName(method);
+  }
+}
+
+// The external force enters where particles carry forces, as read when the system is built
+// and when its time is set: on several ranks rank 0's particles never do, the others' (and
+// one rank's) only after setTime.
+TEST(GridSystem, ExternalForceIsReadWhenTheTimeIsSet) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  NodeOwnership<1> own(makeGridGeometry<1>({0.0}, {1.0}, {8}), comm);
+  auto ps = barPoints(own, Method::fem, Formula(0.0));
+  Teuchos::ParameterList mat;
+  mat.set("Model", std::string("linear")), mat.set("E", std::string("1"));
+  validateParameters(mat, materialValidParameters());
+  Materials<1> materials = {createMaterial<1>("m", mat)};
+  declareMaterialVariables(ps, materials), initializeMaterials(ps, materials, true);
+  std::vector<std::shared_ptr<Contribution<1>>> none;
+  GridSystem<1> system(own, Method::fem, Kinematics::totalLagrangian, ps, materials, none, 1.0,
+                       1.0);
+  EXPECT_FALSE(system.particlesCarryForces());
+  Vector x(system.unknownMap());
+  x.randomize(-0.01, 0.01);
+  Vector unloaded(system.unknownMap()), loaded(system.unknownMap());
+  system.evaluate(x, &unloaded, nullptr);
+  const bool carries = comm->getSize() == 1 || comm->getRank() != 0;
+  if (carries)
+    Kokkos::deep_copy(ps.force, 0.25);
+  system.setTime(1.0, 2.0);
+  EXPECT_EQ(system.particlesCarryForces(), carries);
+  system.evaluate(x, &loaded, nullptr);
+  loaded.update(-1.0, unloaded, 1.0);  // -2 sum_p phi_ip f_p
+  double local = 0.0, sum = 0.0;
+  for (double v : loaded.getData())
+    local += v;
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(sum));
+  const double count = static_cast<double>(carries ? ps.size() : 0);
+  double particles = 0.0;
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, count, Teuchos::outArg(particles));
+  EXPECT_NEAR(sum, -2.0 * 0.25 * particles, 1e-13);
+  EXPECT_GT(particles, 0.0);
 }
 
 }  // namespace
