@@ -35,46 +35,45 @@ void addLumpedMass(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space
 }
 
 template <int Dim, class Space>
-void addInertiaForce(MassType type, const ParticleGridMap<Dim, Space>& map,
-                     const EntryDofs<Space>& entryDofs,
-                     const typename ParticleSet<Dim, Space>::Scalars& mass, const LocalValues& a,
-                     const LocalValuesMutable& f) {
+void addConsistentInertiaForce(const ParticleGridMap<Dim, Space>& map,
+                               const EntryDofs<Space>& entryDofs,
+                               const typename ParticleSet<Dim, Space>::Scalars& mass,
+                               const LocalValues& a, const LocalValuesMutable& f) {
   auto rowPtr = map.rowPtr;
   auto phi = map.phi;
-  const bool consistent = type == MassType::consistent;
   Kokkos::parallel_for(
       "impm::inertiaForce", RangePolicy<Space>(0, map.numParticles()), KOKKOS_LAMBDA(const int p) {
         double ap[Dim] = {};  // the particle's acceleration sum_j phi_jp a_j
-        if (consistent)
-          for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k)
-            for (int d = 0; d < Dim; ++d)
-              ap[d] += phi(k) * a(entryDofs(k) + d, 0);
         for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k)
-          for (int d = 0; d < Dim; ++d) {
-            const double ad = consistent ? ap[d] : a(entryDofs(k) + d, 0);
-            Kokkos::atomic_add(&f(entryDofs(k) + d, 0), mass(p) * phi(k) * ad);
-          }
+          for (int d = 0; d < Dim; ++d)
+            ap[d] += phi(k) * a(entryDofs(k) + d, 0);
+        for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k)
+          for (int d = 0; d < Dim; ++d)
+            Kokkos::atomic_add(&f(entryDofs(k) + d, 0), mass(p) * phi(k) * ap[d]);
+      });
+}
+
+template <class Space>
+void addDiagonal(double scale, const LocalValues& d, const LocalMatrix& K) {
+  // Added once per row: one search of the row instead of one per particle and node.
+  Kokkos::parallel_for(
+      "impm::addDiagonal", RangePolicy<Space>(0, d.extent(0)), KOKKOS_LAMBDA(const LO row) {
+        if (d(row, 0) != 0.0)
+          RowAccumulator<LocalMatrix>(K, row).add(row, scale * d(row, 0));
       });
 }
 
 namespace {
 
-// The lumped mass touches only the diagonal: summed per row first, then added to the
-// matrix once per row (one search of the row instead of one per particle and node).  Rows
-// without mass (extra unknowns) are left alone.
+// The lumped mass touches only the diagonal: summed per row first.
 template <int Dim, class Space>
 void addLumpedMassMatrix(double scale, const ParticleGridMap<Dim, Space>& map,
                          const EntryDofs<Space>& entryDofs,
                          const typename ParticleSet<Dim, Space>::Scalars& mass,
                          const LocalMatrix& K) {
-  const LO rows = K.numRows();
-  LocalValuesMutable diagonal("lumped mass", rows, 1);
+  LocalValuesMutable diagonal("lumped mass", K.numRows(), 1);
   addLumpedMass<Dim, Space>(map, entryDofs, mass, diagonal);
-  Kokkos::parallel_for(
-      "impm::lumpedMassMatrix", RangePolicy<Space>(0, rows), KOKKOS_LAMBDA(const LO row) {
-        if (diagonal(row, 0) != 0.0)
-          RowAccumulator<LocalMatrix>(K, row).add(row, scale * diagonal(row, 0));
-      });
+  addDiagonal<Space>(scale, diagonal, K);
 }
 
 }  // namespace
@@ -135,8 +134,8 @@ void gridToParticleVelocity(const ParticleGridMap<Dim, Space>& map,
   template void addLumpedMass<D, DefaultExecSpace>(const ParticleGridMap<D>&, const EntryDofs<>&, \
                                                    const ParticleSet<D>::Scalars&,                \
                                                    const LocalValuesMutable&);                    \
-  template void addInertiaForce<D, DefaultExecSpace>(                                             \
-      MassType, const ParticleGridMap<D>&, const EntryDofs<>&, const ParticleSet<D>::Scalars&,    \
+  template void addConsistentInertiaForce<D, DefaultExecSpace>(                                   \
+      const ParticleGridMap<D>&, const EntryDofs<>&, const ParticleSet<D>::Scalars&,              \
       const LocalValues&, const LocalValuesMutable&);                                             \
   template void addMassMatrix<D, DefaultExecSpace>(                                               \
       MassType, double, const ParticleGridMap<D>&, const EntryDofs<>&,                            \
@@ -147,5 +146,6 @@ void gridToParticleVelocity(const ParticleGridMap<Dim, Space>& map,
 IMPM_INSTANTIATE(1)
 IMPM_INSTANTIATE(2)
 #undef IMPM_INSTANTIATE
+template void addDiagonal<DefaultExecSpace>(double, const LocalValues&, const LocalMatrix&);
 
 }  // namespace impm

@@ -4,8 +4,9 @@
 //   lumped mass        m_i = sum_p m_p phi_ip                           (eq. 1.49, 1.72)
 //   consistent mass    M_ij = sum_p m_p phi_ip phi_jp                   (eq. 1.48, 1.71)
 //   particle to grid   q_i = sum_p m_p phi_ip q_p  (momentum m v, or m a)
-//   inertia force      (M a)_i, with a the grid acceleration: lumped m_i a_i, consistent
-//                      sum_p m_p phi_ip (sum_j phi_jp a_j)
+//   inertia force      (M a)_i, with a the grid acceleration: consistent
+//                      sum_p m_p phi_ip (sum_j phi_jp a_j); the lumped m_i a_i is a pass over
+//                      the grid once m_i is known (solver/GridSystem)
 
 #include "assembly/Forces.hpp"
 
@@ -26,18 +27,23 @@ void addLumpedMass(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space
                    const typename ParticleSet<Dim, Space>::Scalars& mass,
                    const LocalValuesMutable& m);
 
-// f += M a (a: grid accelerations, overlap-local).
+// f += M a with the consistent mass (a: grid accelerations, overlap-local).
 template <int Dim, class Space = DefaultExecSpace>
-void addInertiaForce(MassType type, const ParticleGridMap<Dim, Space>& map,
-                     const EntryDofs<Space>& entryDofs,
-                     const typename ParticleSet<Dim, Space>::Scalars& mass, const LocalValues& a,
-                     const LocalValuesMutable& f);
+void addConsistentInertiaForce(const ParticleGridMap<Dim, Space>& map,
+                               const EntryDofs<Space>& entryDofs,
+                               const typename ParticleSet<Dim, Space>::Scalars& mass,
+                               const LocalValues& a, const LocalValuesMutable& f);
 
 // K += scale M (rows and columns: overlap-map indices, as in addTangent).
 template <int Dim, class Space = DefaultExecSpace>
 void addMassMatrix(MassType type, double scale, const ParticleGridMap<Dim, Space>& map,
                    const EntryDofs<Space>& entryDofs,
                    const typename ParticleSet<Dim, Space>::Scalars& mass, const LocalMatrix& K);
+
+// K_ii += scale d_i for the rows of d (local indices; rows with d_i = 0 are left alone, so
+// that rows without mass keep their pattern's values): a lumped mass matrix.
+template <class Space = DefaultExecSpace>
+void addDiagonal(double scale, const LocalValues& d, const LocalMatrix& K);
 
 // Particle velocities and accelerations from the grid after a step:
 //   FLIP v_p += sum_i phi_ip (v_i^new - v_i^old),  PIC v_p = sum_i phi_ip v_i^new,

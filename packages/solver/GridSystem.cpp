@@ -330,8 +330,8 @@ void GridSystem<Dim>::assembleResidual(const Vector& xOverlap, Vector& residual)
     if (loaded_)
       addExternalForce<Dim>(particleGridMap_, entryDofs_, particles_.force, loadFactor_, local);
     if (a)
-      addInertiaForce<Dim>(inertia_.mass, particleGridMap_, entryDofs_, particles_.mass,
-                           a->getLocalViewDevice(Tpetra::Access::ReadOnly), local);
+      addConsistentInertiaForce<Dim>(particleGridMap_, entryDofs_, particles_.mass,
+                                     a->getLocalViewDevice(Tpetra::Access::ReadOnly), local);
   }
   {
     auto local = f.getLocalViewHost(Tpetra::Access::ReadWrite);
@@ -385,9 +385,12 @@ void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jac
     J.setAllToScalar(0.0);
     if (!frozen_)
       addTangent<Dim>(particleGridMap_, entryDofs_, particles_, work_.An, J.getLocalMatrixDevice());
-    if (inertia_.c0 != 0.0)
-      addMassMatrix<Dim>(inertia_.mass, inertia_.c0, particleGridMap_, entryDofs_, particles_.mass,
-                         J.getLocalMatrixDevice());
+    if (inertia_.c0 != 0.0 && inertia_.mass == MassType::lumped)
+      addDiagonal(inertia_.c0, lumpedMass()->getLocalViewDevice(Tpetra::Access::ReadOnly),
+                  J.getLocalMatrixDevice());  // the owned rows, first on the overlap map
+    else if (inertia_.c0 != 0.0)
+      addMassMatrix<Dim>(MassType::consistent, inertia_.c0, particleGridMap_, entryDofs_,
+                         particles_.mass, J.getLocalMatrixDevice());
     for (std::size_t c = 0; c < contributions_.size(); ++c)
       contributions_[c]->addJacobian(context(static_cast<int>(c)), constHost(xHost), J);
     J.endAssembly();

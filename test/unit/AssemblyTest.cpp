@@ -171,7 +171,7 @@ TEST(Mass, ConsistentRowsSumToTheLumpedMassAndInertiaMatchesTheMatrix) {
     Kokkos::View<double**, Kokkos::LayoutLeft> lumped("m", 5, 1), ma("Ma", 5, 1), ones("1", 5, 1);
     Kokkos::deep_copy(ones, 1.0);
     addLumpedMass<1>(f.map, f.lids, f.ps.mass, lumped);
-    addInertiaForce<1>(MassType::consistent, f.map, f.lids, f.ps.mass, ones, ma);
+    addConsistentInertiaForce<1>(f.map, f.lids, f.ps.mass, ones, ma);
     auto l = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), lumped);
     auto c = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ma);
     double total = 0;

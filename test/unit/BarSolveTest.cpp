@@ -306,7 +306,8 @@ Vector residualWith(GridSystem<1>& system, MassType mass, const Vector& x,
 
 // The lumped inertia, m_i a_i on the grid, against the consistent mass's sum over the
 // particles: for a uniform acceleration the two are the same (the rows of the consistent
-// mass sum to the lumped one), and m_i then weighs any acceleration row by row.  On one rank
+// mass sum to the lumped one), m_i then weighs any acceleration row by row, and the
+// Jacobian holds c0 m_i.  On one rank
 // the overlap values are the owned vector's own, on two they are imported.
 TEST(GridSystem, LumpedInertiaIsTheParticlesMassTimesTheAcceleration) {
   auto comm = Teuchos::DefaultComm<int>::getComm();
@@ -354,6 +355,8 @@ TEST(GridSystem, LumpedInertiaIsTheParticlesMassTimesTheAcceleration) {
     double sum = 0.0;
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, total, Teuchos::outArg(sum));
     EXPECT_NEAR(sum, 1.5, 1e-14) << methodName(method);
+    // And the Jacobian's c0 m_i on the diagonal is the residual's derivative.
+    EXPECT_LT(jacobianError(system, 0.01), 1e-7) << methodName(method);
   }
 }
 
