@@ -231,15 +231,17 @@ bool DynamicStepper<Dim>::solveStep(GridSystem<Dim>& system, const Acceleration&
     r->scale(s.rv, v);  // central difference: a^n does not enter
   maskExtras(*r, system.extraRows());
   system.setInertia({settings_.mass, s.c0, r});
-  // Guess: the step's displacement if the acceleration stayed a^n.
   du = system.initialGuess();
+  // R is affine in du with the diagonal Jacobian: the elimination's result does not depend
+  // on the guess.
+  if (settings_.isExplicit() && system.hasDiagonalJacobian())
+    return eliminate(system, *du, report);
+  // Newton's guess: the step's displacement if the acceleration stayed a^n.
   Vector predictor(system.unknownMap(), false);
   predictor.update(dt, v, 0.5 * dt * dt, a, 0.0);
   maskExtras(predictor, system.extraRows());
   du->update(1.0, predictor, 1.0);
   system.imposeConstraints(*du);
-  if (settings_.isExplicit() && system.hasDiagonalJacobian())
-    return eliminate(system, *du, report);
   return this->solve(system, *du, report);
 }
 
