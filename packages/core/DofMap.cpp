@@ -8,9 +8,27 @@ namespace impm {
 
 namespace {
 
+// The distinct values of v, ascending.  v lists a node per particle-node pair, so each
+// node many times, within a range of ids not much wider than the list: there a mark per id
+// finds them in one pass (sorting them took a third of an explicit MPM step); otherwise
+// they are sorted.
 void sortUnique(std::vector<GlobalId>& v) {
-  std::sort(v.begin(), v.end());
-  v.erase(std::unique(v.begin(), v.end()), v.end());
+  if (v.empty())
+    return;
+  const auto [low, high] = std::minmax_element(v.begin(), v.end());
+  const GlobalId first = *low, range = *high - *low + 1;
+  if (range > 4 * static_cast<GlobalId>(v.size())) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    return;
+  }
+  std::vector<char> seen(static_cast<std::size_t>(range), 0);
+  for (const GlobalId g : v)
+    seen[static_cast<std::size_t>(g - first)] = 1;
+  v.clear();
+  for (GlobalId k = 0; k < range; ++k)
+    if (seen[static_cast<std::size_t>(k)])
+      v.push_back(first + k);
 }
 
 // Owned nodes that some rank touches: every rank marks the nodes it touches, and an Export

@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <set>
+
 #include <Teuchos_DefaultComm.hpp>
 
 #include "core/Collective.hpp"
@@ -165,6 +168,30 @@ TEST(DofMap, ActiveNodesOnlyWithExtrasNextToTheirAnchors) {
   const auto overlap = dofs.overlapMap()->getNodeElementList();
   for (decltype(gids.size()) k = 0; k < gids.size(); ++k)
     EXPECT_EQ(overlap[k], gids[k]);
+}
+
+// The touched list holds a node once per particle-node pair, in any order: each distinct
+// node is one unknown, whether the nodes lie close together (marked in one pass) or far
+// apart (sorted).
+TEST(DofMap, RepeatedTouchedNodesInAnyOrderAreOneUnknownEach) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  NodeOwnership<1> own(makeGridGeometry<1>({0.0}, {1.0}, {1000}), comm);
+  std::vector<GlobalId> close;
+  for (int repeat = 0; repeat < 3; ++repeat)
+    for (GlobalId node = 600; node >= 400; node -= 2)  // on both halves of the grid
+      close.push_back(node);
+  const std::vector<GlobalId> apart = {999, 5, 500, 5, 999, 500, 5};
+  for (const auto& [touched, distinct] :
+       {std::make_pair(close, std::set<GlobalId>(close.begin(), close.end())),
+        std::make_pair(apart, std::set<GlobalId>{5, 500, 999})}) {
+    DofMap<1> dofs(own, touched, {});
+    EXPECT_EQ(dofs.numActiveNodes(), static_cast<GlobalId>(distinct.size()));
+    const auto overlap = dofs.overlapMap()->getNodeElementList();
+    EXPECT_EQ(std::set<GlobalId>(overlap.begin(), overlap.end()), distinct);
+    EXPECT_EQ(overlap.size(), distinct.size());  // each once
+    const auto owned = dofs.ownedMap()->getNodeElementList();
+    EXPECT_TRUE(std::is_sorted(owned.begin(), owned.end()));
+  }
 }
 
 TEST(Collective, AFailureOnOneRankStopsEveryRank) {
