@@ -55,6 +55,16 @@ ParticleSet<1> barPoints(const NodeOwnership<1>& own, Method method, const Formu
   return ps;
 }
 
+// One linear material of modulus E(x) on every point, its variables declared and set.
+Materials<1> linearMaterial(ParticleSet<1>& ps, const std::string& E) {
+  Teuchos::ParameterList mat;
+  mat.set("Model", std::string("linear")), mat.set("E", E);
+  validateParameters(mat, materialValidParameters());
+  Materials<1> materials = {createMaterial<1>("m", mat)};
+  declareMaterialVariables(ps, materials), initializeMaterials(ps, materials, true);
+  return materials;
+}
+
 std::shared_ptr<Contribution<1>> robin(const std::string& end, double a, double b, double g,
                                        double at) {
   Teuchos::ParameterList p;
@@ -69,11 +79,7 @@ TEST(BarSolve, PatchTestIsExact) {
   for (Method method : {Method::fem, Method::mpm, Method::gimp, Method::cpdi}) {
     NodeOwnership<1> own(makeGridGeometry<1>({0.0}, {1.0}, {8}), comm);
     auto ps = barPoints(own, method, Formula(1.0));
-    Teuchos::ParameterList mat;
-    mat.set("Model", std::string("linear")), mat.set("E", std::string("1 - x/2"));
-    validateParameters(mat, materialValidParameters());
-    Materials<1> materials = {createMaterial<1>("steel", mat)};
-    declareMaterialVariables(ps, materials), initializeMaterials(ps, materials, true);
+    Materials<1> materials = linearMaterial(ps, "1 - x/2");
     std::vector<std::shared_ptr<Contribution<1>>> bcs = {robin("left", 0, 1, 0, 0.0),
                                                          robin("right", 1, 0, 1, 1.0)};
     auto system = Teuchos::rcp(
@@ -151,11 +157,7 @@ TEST(GridSystem, JacobianIsTheDerivativeOfTheResidual) {
     Kokkos::deep_copy(ps.volume, V), Kokkos::deep_copy(ps.section, A), Kokkos::deep_copy(ps.F, F);
     Kokkos::deep_copy(ps.force, f);
   }
-  Teuchos::ParameterList mat;
-  mat.set("Model", std::string("linear")), mat.set("E", std::string("1 + x"));
-  validateParameters(mat, materialValidParameters());
-  Materials<1> materials = {createMaterial<1>("m", mat)};
-  declareMaterialVariables(ps, materials), initializeMaterials(ps, materials, true);
+  Materials<1> materials = linearMaterial(ps, "1 + x");
   auto robin = [](const std::string& end, double a, double b, double at) {
     Teuchos::ParameterList p;
     p.set("Body", std::string("bar")), p.set("End", end), p.set("alpha", a), p.set("beta", b);
@@ -322,11 +324,7 @@ TEST(GridSystem, LumpedInertiaIsTheParticlesMassTimesTheAcceleration) {
         m(p) = (1.0 + X(p, 0)) * V(p);
       Kokkos::deep_copy(ps.mass, m);
     }
-    Teuchos::ParameterList mat;
-    mat.set("Model", std::string("linear")), mat.set("E", std::string("1 + x"));
-    validateParameters(mat, materialValidParameters());
-    Materials<1> materials = {createMaterial<1>("m", mat)};
-    declareMaterialVariables(ps, materials), initializeMaterials(ps, materials, true);
+    Materials<1> materials = linearMaterial(ps, "1 + x");
     std::vector<std::shared_ptr<Contribution<1>>> bcs = {robin("left", 0, 1, 0, 0.0),
                                                          robin("right", 1, 0, 1, 1.0)};
     GridSystem<1> system(own, method, Kinematics::totalLagrangian, ps, materials, bcs, 1.0, 1.0);
@@ -367,11 +365,7 @@ TEST(GridSystem, ExternalForceIsReadWhenTheTimeIsSet) {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   NodeOwnership<1> own(makeGridGeometry<1>({0.0}, {1.0}, {8}), comm);
   auto ps = barPoints(own, Method::fem, Formula(0.0));
-  Teuchos::ParameterList mat;
-  mat.set("Model", std::string("linear")), mat.set("E", std::string("1"));
-  validateParameters(mat, materialValidParameters());
-  Materials<1> materials = {createMaterial<1>("m", mat)};
-  declareMaterialVariables(ps, materials), initializeMaterials(ps, materials, true);
+  Materials<1> materials = linearMaterial(ps, "1");
   std::vector<std::shared_ptr<Contribution<1>>> none;
   GridSystem<1> system(own, Method::fem, Kinematics::totalLagrangian, ps, materials, none, 1.0,
                        1.0);
