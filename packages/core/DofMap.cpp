@@ -10,7 +10,7 @@ namespace {
 
 // The distinct values of v, ascending.  v lists a node per particle-node pair, so each
 // node many times, within a range of ids not much wider than the list: there a mark per id
-// finds them in one pass (sorting them took a third of an explicit MPM step); otherwise
+// finds them in one pass (sorting them took a quarter of an explicit MPM step); otherwise
 // they are sorted.
 void sortUnique(std::vector<GlobalId>& v) {
   if (v.empty())
