@@ -71,8 +71,6 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
       importer_(layout_->importer),
       work_((workspace ? *workspace : ownWorkspace_).arrays(particles.size(), kinematics)),
       trial_(particles, materials) {
-  overlapIsOwned_ = ownership.comm()->getSize() == 1 && dofs_.overlapMap()->getNodeNumElements() ==
-                                                            dofs_.ownedMap()->getNodeNumElements();
   loaded_ = carriesForces<Dim>(particles_);
   // Prescribed rows get the size of a stiffness diagonal (modulus h^(Dim-2)), so that they
   // neither dominate nor vanish in the preconditioner.
@@ -178,10 +176,6 @@ void GridSystem<Dim>::setTime(double time, double loadFactor) {
 
 template <int Dim>
 Teuchos::RCP<const Vector> GridSystem<Dim>::toOverlap(const Vector& owned) const {
-  // The overlap map begins with the owned map (core/DofMap.hpp): where it is no longer,
-  // the owned values are the overlap values.
-  if (overlapIsOwned_)
-    return owned.offsetView(dofs_.overlapMap(), 0);
   auto overlap = Teuchos::rcp(new Vector(dofs_.overlapMap(), false));  // every entry imported
   overlap->doImport(owned, *importer_, Tpetra::INSERT);
   return overlap;

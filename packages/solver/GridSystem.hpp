@@ -96,9 +96,7 @@ class GridSystem : public ResidualModel {
   // Sets the prescribed unknowns of x to their prescribed increments (a guess must meet them,
   // see eliminateConstrained).
   void imposeConstraints(Vector& x) const;
-  // Overlap values of an owned vector.  Where the overlap map is the owned one (one rank
-  // whose contributions reach no other unknowns) they are the owned vector's own, not a
-  // copy: read them before the owned vector changes.  Collective otherwise.
+  // Overlap values of an owned vector.  Collective.
   Teuchos::RCP<const Vector> toOverlap(const Vector& owned) const;
   // The step converged at x: the contributions and the materials commit their state (after
   // trialState(x), whose stress then serves as the next step's start where it is the same:
@@ -186,8 +184,6 @@ class GridSystem : public ResidualModel {
   Inertia inertia_;
   Teuchos::RCP<const Vector> inertiaOverlap_;  // r on the overlap map (consistent mass only)
   mutable Teuchos::RCP<const Vector> lumpedMass_;
-  // Whether the overlap map is the owned map (see toOverlap).
-  bool overlapIsOwned_ = false;
   bool loaded_ = true;  // particlesCarryForces()
   bool frozen_ = false;
   // Whether work_ holds the stress at the step start (du = 0, what a frozen internal force

@@ -309,8 +309,7 @@ Vector residualWith(GridSystem<1>& system, MassType mass, const Vector& x,
 // The lumped inertia, m_i a_i on the grid, against the consistent mass's sum over the
 // particles: for a uniform acceleration the two are the same (the rows of the consistent
 // mass sum to the lumped one), m_i then weighs any acceleration row by row, and the
-// Jacobian holds c0 m_i.  On one rank
-// the overlap values are the owned vector's own, on two they are imported.
+// Jacobian holds c0 m_i.
 TEST(GridSystem, LumpedInertiaIsTheParticlesMassTimesTheAcceleration) {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   NodeOwnership<1> own(makeGridGeometry<1>({0.0}, {1.0}, {8}), comm);
