@@ -63,29 +63,11 @@ void addDiagonal(double scale, const LocalValues& d, const LocalMatrix& K) {
       });
 }
 
-namespace {
-
-// The lumped mass touches only the diagonal: summed per row first.
 template <int Dim, class Space>
-void addLumpedMassMatrix(double scale, const ParticleGridMap<Dim, Space>& map,
-                         const EntryDofs<Space>& entryDofs,
-                         const typename ParticleSet<Dim, Space>::Scalars& mass,
-                         const LocalMatrix& K) {
-  LocalValuesMutable diagonal("lumped mass", K.numRows(), 1);
-  addLumpedMass<Dim, Space>(map, entryDofs, mass, diagonal);
-  addDiagonal<Space>(scale, diagonal, K);
-}
-
-}  // namespace
-
-template <int Dim, class Space>
-void addMassMatrix(MassType type, double scale, const ParticleGridMap<Dim, Space>& map,
-                   const EntryDofs<Space>& entryDofs,
-                   const typename ParticleSet<Dim, Space>::Scalars& mass, const LocalMatrix& K) {
-  if (type == MassType::lumped) {
-    addLumpedMassMatrix<Dim, Space>(scale, map, entryDofs, mass, K);
-    return;
-  }
+void addConsistentMassMatrix(double scale, const ParticleGridMap<Dim, Space>& map,
+                             const EntryDofs<Space>& entryDofs,
+                             const typename ParticleSet<Dim, Space>::Scalars& mass,
+                             const LocalMatrix& K) {
   auto rowPtr = map.rowPtr;
   auto phi = map.phi;
   Kokkos::parallel_for(
@@ -137,9 +119,9 @@ void gridToParticleVelocity(const ParticleGridMap<Dim, Space>& map,
   template void addConsistentInertiaForce<D, DefaultExecSpace>(                                   \
       const ParticleGridMap<D>&, const EntryDofs<>&, const ParticleSet<D>::Scalars&,              \
       const LocalValues&, const LocalValuesMutable&);                                             \
-  template void addMassMatrix<D, DefaultExecSpace>(                                               \
-      MassType, double, const ParticleGridMap<D>&, const EntryDofs<>&,                            \
-      const ParticleSet<D>::Scalars&, const LocalMatrix&);                                        \
+  template void addConsistentMassMatrix<D, DefaultExecSpace>(                                     \
+      double, const ParticleGridMap<D>&, const EntryDofs<>&, const ParticleSet<D>::Scalars&,      \
+      const LocalMatrix&);                                                                        \
   template void gridToParticleVelocity<D, DefaultExecSpace>(                                      \
       const ParticleGridMap<D>&, const EntryDofs<>&, const LocalValues&, const LocalValues&,      \
       const LocalValues&, double, const ParticleSet<D>&);

@@ -34,14 +34,16 @@ void addConsistentInertiaForce(const ParticleGridMap<Dim, Space>& map,
                                const typename ParticleSet<Dim, Space>::Scalars& mass,
                                const LocalValues& a, const LocalValuesMutable& f);
 
-// K += scale M (rows and columns: overlap-map indices, as in addTangent).
+// K += scale M with the consistent mass (rows and columns: overlap-map indices, as in
+// addTangent).
 template <int Dim, class Space = DefaultExecSpace>
-void addMassMatrix(MassType type, double scale, const ParticleGridMap<Dim, Space>& map,
-                   const EntryDofs<Space>& entryDofs,
-                   const typename ParticleSet<Dim, Space>::Scalars& mass, const LocalMatrix& K);
+void addConsistentMassMatrix(double scale, const ParticleGridMap<Dim, Space>& map,
+                             const EntryDofs<Space>& entryDofs,
+                             const typename ParticleSet<Dim, Space>::Scalars& mass,
+                             const LocalMatrix& K);
 
 // K_ii += scale d_i for the rows of d (local indices; rows with d_i = 0 are left alone, so
-// that rows without mass keep their pattern's values): a lumped mass matrix.
+// that rows without mass keep their pattern's values): the lumped mass matrix from m_i.
 template <class Space = DefaultExecSpace>
 void addDiagonal(double scale, const LocalValues& d, const LocalMatrix& K);
 

@@ -84,8 +84,8 @@ Teuchos::RCP<Vector> DynamicStepper<Dim>::fromParticles(
   auto sum = system.particleToGrid(q);
   auto result = Teuchos::rcp(new Vector(system.unknownMap()));
   if (settings_.mass == MassType::consistent) {
-    solveLinearSystem(*this->setup_.newton.linearSolveStrategy(),
-                      system.massMatrix(MassType::consistent), *sum, *result);
+    solveLinearSystem(*this->setup_.newton.linearSolveStrategy(), system.consistentMassMatrix(),
+                      *sum, *result);
     maskExtras(*result, system.extraRows());
     return result;
   }

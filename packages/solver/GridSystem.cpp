@@ -383,8 +383,8 @@ void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jac
       addDiagonal(inertia_.c0, lumpedMass()->getLocalViewDevice(Tpetra::Access::ReadOnly),
                   J.getLocalMatrixDevice());  // the owned rows, first on the overlap map
     else if (inertia_.c0 != 0.0)
-      addMassMatrix<Dim>(MassType::consistent, inertia_.c0, particleGridMap_, entryDofs_,
-                         particles_.mass, J.getLocalMatrixDevice());
+      addConsistentMassMatrix<Dim>(inertia_.c0, particleGridMap_, entryDofs_, particles_.mass,
+                                   J.getLocalMatrixDevice());
     for (std::size_t c = 0; c < contributions_.size(); ++c)
       contributions_[c]->addJacobian(context(static_cast<int>(c)), constHost(xHost), J);
     J.endAssembly();
@@ -462,12 +462,12 @@ Teuchos::RCP<const Vector> GridSystem<Dim>::lumpedMass() const {
 }
 
 template <int Dim>
-Teuchos::RCP<CrsMatrix> GridSystem<Dim>::massMatrix(MassType type) const {
+Teuchos::RCP<CrsMatrix> GridSystem<Dim>::consistentMassMatrix() const {
   auto M = Teuchos::rcp(new FECrsMatrix(graph_));
   M->beginAssembly();
   M->setAllToScalar(0.0);
-  addMassMatrix<Dim>(type, 1.0, particleGridMap_, entryDofs_, particles_.mass,
-                     M->getLocalMatrixDevice());
+  addConsistentMassMatrix<Dim>(1.0, particleGridMap_, entryDofs_, particles_.mass,
+                               M->getLocalMatrixDevice());
   const auto& owned = *dofs_.ownedMap();
   const double one = 1.0;
   for (std::size_t k = 0; k < owned.getNodeNumElements(); ++k) {

@@ -64,8 +64,9 @@ class GridSystem : public ResidualModel {
   // once: the particles' masses and the map do not change while a system lives.  Collective
   // the first time.
   Teuchos::RCP<const Vector> lumpedMass() const;
-  // The mass matrix, with 1 on the diagonal of the extra unknowns so that it can be solved.
-  Teuchos::RCP<CrsMatrix> massMatrix(MassType type) const;
+  // The consistent mass matrix, with 1 on the diagonal of the extra unknowns so that it can
+  // be solved (the lumped one is lumpedMass()).
+  Teuchos::RCP<CrsMatrix> consistentMassMatrix() const;
   // 1 on nodal unknowns, 0 on extra unknowns.
   const Vector& nodalMask() const { return *layout_->nodalMask; }
   const std::vector<LO>& extraRows() const { return layout_->extraRows; }
