@@ -53,46 +53,22 @@ KOKKOS_INLINE_FUNCTION bool negligible(const GridGeometry<Dim>& grid, double phi
 
 }  // namespace detail
 
-template <int Dim, class Space, class Weights>
-ParticleGridMap<Dim, Space> buildParticleGridMap(const Weights& weights,
-                                                 const ParticleSet<Dim, Space>& particles) {
-  using Exec = typename Space::execution_space;
-  const GridGeometry<Dim> grid = weights.grid;
-  const int n = static_cast<int>(particles.size());
-  ParticleGridMap<Dim, Space> map;
-  map.rowPtr = Kokkos::View<std::size_t*, typename Space::memory_space>("Y rowPtr", n + 1);
+namespace detail {
 
-  // Count, and find the first particle whose integration domain left the grid.
-  auto rowPtr = map.rowPtr;
-  int firstOutside = n;
-  Kokkos::parallel_reduce(
-      "impm::countMapEntries", Kokkos::RangePolicy<Exec>(0, n),
-      KOKKOS_LAMBDA(const int p, int& outside) {
-        int lo[Dim] = {}, hi[Dim] = {};
-        if (!weights.nodeBox(p, lo, hi, kGridTolerance)) {
-          if (p < outside)
-            outside = p;
-          rowPtr(p + 1) = 0;
-          return;
-        }
-        std::size_t count = 0;
-        detail::forEachNodeInBox<Dim>(grid, lo, hi, [&](const int* idx, GlobalId) {
-          double phi, grad[Dim];
-          weights.evaluate(p, lo, idx, phi, grad);
-          if (!detail::negligible<Dim>(grid, phi, grad))
-            ++count;
-        });
-        rowPtr(p + 1) = count;
-      },
-      Kokkos::Min<int>(firstOutside));
-  if (firstOutside < n) {
-    std::ostringstream msg;
-    msg << particleLabel(particles, firstOutside) << " has left the grid [";
-    for (int d = 0; d < Dim; ++d)
-      msg << (d ? " x [" : "") << grid.origin[d] << ", " << grid.upper(d) << "]";
-    throw NumericalError(msg.str() + " (its integration domain reaches outside it)");
-  }
+// NumericalError naming the first particle whose integration domain left the grid.
+template <int Dim, class Space>
+void throwLeftTheGrid(const GridGeometry<Dim>& grid, const ParticleSet<Dim, Space>& particles,
+                      int p) {
+  std::ostringstream msg;
+  msg << particleLabel(particles, p) << " has left the grid [";
+  for (int d = 0; d < Dim; ++d)
+    msg << (d ? " x [" : "") << grid.origin[d] << ", " << grid.upper(d) << "]";
+  throw NumericalError(msg.str() + " (its integration domain reaches outside it)");
+}
 
+// rowPtr(p) becomes the sum of rowPtr(0 .. p-1) (the counts are at p + 1); returns the total.
+template <class Exec, class View>
+std::size_t exclusiveSum(const View& rowPtr, int n) {
   std::size_t total = 0;
   Kokkos::parallel_scan(
       "impm::scanMapEntries", Kokkos::RangePolicy<Exec>(0, n + 1),
@@ -103,18 +79,96 @@ ParticleGridMap<Dim, Space> buildParticleGridMap(const Weights& weights,
           rowPtr(p) = sum;
       },
       total);
+  return total;
+}
 
-  map.node = Kokkos::View<GlobalId*, typename Space::memory_space>("Y node", total);
-  map.phi = Kokkos::View<double*, typename Space::memory_space>("Y phi", total);
-  map.grad = Kokkos::View<double* [Dim], typename Space::memory_space>("Y grad", total);
-  auto node = map.node;
-  auto phiView = map.phi;
-  auto gradView = map.grad;
+// The map whose particle p has counts(p + 1) entries at the start of its row of `box`: the
+// same entries with the rows next to one another.
+template <int Dim, class Space>
+ParticleGridMap<Dim, Space> compacted(
+    const ParticleGridMap<Dim, Space>& box,
+    const Kokkos::View<std::size_t*, typename Space::memory_space>& counts, std::size_t total) {
+  using Exec = typename Space::execution_space;
+  using Memory = typename Space::memory_space;
+  const int n = static_cast<int>(box.numParticles());
+  exclusiveSum<Exec>(counts, n);
+  ParticleGridMap<Dim, Space> map;
+  map.rowPtr = counts;
+  map.node =
+      Kokkos::View<GlobalId*, Memory>(Kokkos::ViewAllocateWithoutInitializing("Y node"), total);
+  map.phi = Kokkos::View<double*, Memory>(Kokkos::ViewAllocateWithoutInitializing("Y phi"), total);
+  map.grad =
+      Kokkos::View<double* [Dim], Memory>(Kokkos::ViewAllocateWithoutInitializing("Y grad"), total);
   Kokkos::parallel_for(
-      "impm::fillMapEntries", Kokkos::RangePolicy<Exec>(0, n), KOKKOS_LAMBDA(const int p) {
+      "impm::compactMapEntries", Kokkos::RangePolicy<Exec>(0, n), KOKKOS_LAMBDA(const int p) {
+        for (std::size_t k = map.rowPtr(p), from = box.rowPtr(p); k < map.rowPtr(p + 1);
+             ++k, ++from) {
+          map.node(k) = box.node(from);
+          map.phi(k) = box.phi(from);
+          for (int d = 0; d < Dim; ++d)
+            map.grad(k, d) = box.grad(from, d);
+        }
+      });
+  return map;
+}
+
+}  // namespace detail
+
+// The weights are evaluated once: each particle's entries are written at the place its
+// node box reserves (the box's node count, an upper bound), and only when some weight was
+// negligible are the entries moved together (rare: a domain end on a node up to round-off,
+// a CPDI domain whose corners miss a corner of their box).
+template <int Dim, class Space, class Weights>
+ParticleGridMap<Dim, Space> buildParticleGridMap(const Weights& weights,
+                                                 const ParticleSet<Dim, Space>& particles) {
+  using Exec = typename Space::execution_space;
+  using Memory = typename Space::memory_space;
+  const GridGeometry<Dim> grid = weights.grid;
+  const int n = static_cast<int>(particles.size());
+
+  // The nodes of each particle's box, and the first particle whose domain left the grid.
+  Kokkos::View<std::size_t*, Memory> boxPtr("Y box rowPtr", n + 1);
+  int firstOutside = n;
+  Kokkos::parallel_reduce(
+      "impm::countBoxNodes", Kokkos::RangePolicy<Exec>(0, n),
+      KOKKOS_LAMBDA(const int p, int& outside) {
+        int lo[Dim] = {}, hi[Dim] = {};
+        if (!weights.nodeBox(p, lo, hi, kGridTolerance)) {
+          if (p < outside)
+            outside = p;
+          boxPtr(p + 1) = 0;
+          return;
+        }
+        std::size_t count = 1;
+        for (int d = 0; d < Dim; ++d)
+          count *= static_cast<std::size_t>(hi[d] - lo[d] + 1);
+        boxPtr(p + 1) = count;
+      },
+      Kokkos::Min<int>(firstOutside));
+  if (firstOutside < n)
+    detail::throwLeftTheGrid(grid, particles, firstOutside);
+  const std::size_t capacity = detail::exclusiveSum<Exec>(boxPtr, n);
+
+  // The entries, at their boxes' places; counts(p + 1): how many particle p has.
+  ParticleGridMap<Dim, Space> box;
+  box.rowPtr = boxPtr;
+  box.node =
+      Kokkos::View<GlobalId*, Memory>(Kokkos::ViewAllocateWithoutInitializing("Y node"), capacity);
+  box.phi =
+      Kokkos::View<double*, Memory>(Kokkos::ViewAllocateWithoutInitializing("Y phi"), capacity);
+  box.grad = Kokkos::View<double* [Dim], Memory>(Kokkos::ViewAllocateWithoutInitializing("Y grad"),
+                                                 capacity);
+  Kokkos::View<std::size_t*, Memory> counts("Y rowPtr", n + 1);
+  auto node = box.node;
+  auto phiView = box.phi;
+  auto gradView = box.grad;
+  std::size_t total = 0;
+  Kokkos::parallel_reduce(
+      "impm::fillMapEntries", Kokkos::RangePolicy<Exec>(0, n),
+      KOKKOS_LAMBDA(const int p, std::size_t& sum) {
         int lo[Dim] = {}, hi[Dim] = {};
         weights.nodeBox(p, lo, hi, kGridTolerance);
-        std::size_t k = rowPtr(p);
+        std::size_t k = boxPtr(p);
         detail::forEachNodeInBox<Dim>(grid, lo, hi, [&](const int* idx, GlobalId id) {
           double phi, grad[Dim];
           weights.evaluate(p, lo, idx, phi, grad);
@@ -126,8 +180,13 @@ ParticleGridMap<Dim, Space> buildParticleGridMap(const Weights& weights,
             gradView(k, d) = grad[d];
           ++k;
         });
-      });
-  return map;
+        counts(p + 1) = k - boxPtr(p);
+        sum += k - boxPtr(p);
+      },
+      total);
+  if (total == capacity)
+    return box;
+  return detail::compacted(box, counts, total);
 }
 
 }  // namespace impm

@@ -166,6 +166,45 @@ TEST(ParticleGridMap, CpdiParticleSpanningManyCellsTouchesOnlyCornerCells) {
   expectPartitionOfUnityAndCompleteness(Method::cpdi, grid, ps, 1e-14);
 }
 
+// The entries are written where each particle's node box reserves room and moved together
+// when some box node has a negligible weight: every row must still be that particle's own.
+TEST(ParticleGridMap, RowsWithLeftOutBoxNodesAreEachParticlesOwn) {
+  const auto grid = unitGrid<1>(10);
+  const double centre[3] = {0.24, 0.55, 0.8}, half[3] = {0.19, 0.025, 0.15};
+  ParticleSet<1> ps(3);
+  auto x = Kokkos::create_mirror_view(ps.x);
+  auto r = Kokkos::create_mirror_view(ps.domain);
+  for (int p = 0; p < 3; ++p)
+    x(p, 0) = centre[p], r(p, 0, 0) = half[p];
+  Kokkos::deep_copy(ps.x, x), Kokkos::deep_copy(ps.domain, r);
+  for (Method m : {Method::gimp, Method::cpdi}) {
+    const auto map = buildParticleGridMap(m, grid, ps);
+    auto rowPtr = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), map.rowPtr);
+    auto node = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), map.node);
+    auto phi = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), map.phi);
+    auto grad = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), map.grad);
+    ASSERT_EQ(rowPtr(3), map.numEntries()) << methodName(m);
+    for (int p = 0; p < 3; ++p) {
+      ParticleSet<1> one(1);
+      Kokkos::deep_copy(Kokkos::subview(one.x, 0, 0), centre[p]);
+      Kokkos::deep_copy(Kokkos::subview(one.domain, 0, 0, 0), half[p]);
+      const auto alone = buildParticleGridMap(m, grid, one);
+      auto node1 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), alone.node);
+      auto phi1 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), alone.phi);
+      auto grad1 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), alone.grad);
+      ASSERT_EQ(rowPtr(p + 1) - rowPtr(p), alone.numEntries()) << methodName(m) << " " << p;
+      for (std::size_t k = 0; k < alone.numEntries(); ++k) {
+        EXPECT_EQ(node(rowPtr(p) + k), node1(k));
+        EXPECT_EQ(phi(rowPtr(p) + k), phi1(k));
+        EXPECT_EQ(grad(rowPtr(p) + k, 0), grad1(k, 0));
+      }
+    }
+  }
+  // CPDI's first and last particles reach the nodes of their corners' cells only (4 of the
+  // 6 and of the 5 nodes of their boxes), so the rows were moved: 4 + 2 + 4 entries.
+  EXPECT_EQ(buildParticleGridMap(Method::cpdi, grid, ps).numEntries(), 10u);
+}
+
 TEST(ParticleGridMap, DomainEndOnANodeDoesNotActivateTheNextNode) {
   // Two particles filling [0, 0.1] exactly: nodes 0 and 1 only, despite round-off.
   const auto grid = unitGrid<1>(10);
