@@ -17,12 +17,16 @@ template <int Dim>
 class RowColumns {
  public:
   RowColumns(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryDofs,
-             const Map& overlap, const std::vector<std::pair<GO, GO>>& extraCouplings)
+             const Map& overlap, const std::vector<std::pair<GO, GO>>& extraCouplings,
+             NodeCoupling coupling)
       : numRows_(overlap.getNodeNumElements()),
         nodeStart_(numRows_ + 1, 0),
         nodeOfRow_(numRows_, -1),
         extra_(numRows_) {
-    coupleNodes(map, entryDofs);
+    if (coupling == NodeCoupling::self)
+      coupleNodesWithThemselves(entryDofs);
+    else
+      coupleNodes(map, entryDofs);
     for (std::size_t r = 0; r < numRows_; ++r)
       if (nodeStart_[r + 1] > nodeStart_[r])
         for (int a = 0; a < Dim; ++a)
@@ -86,6 +90,19 @@ class RowColumns {
     }
   }
 
+  // Every node an integration point touches lists itself alone.
+  void coupleNodesWithThemselves(const Kokkos::View<LO*>& entryDofs) {
+    auto lid = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), entryDofs);
+    std::vector<char> touched(numRows_, 0);
+    for (std::size_t k = 0; k < lid.extent(0); ++k)
+      touched[lid(k)] = 1;
+    for (std::size_t r = 0; r < numRows_; ++r) {
+      if (touched[r])
+        nodeColumns_.push_back(static_cast<LO>(r));
+      nodeStart_[r + 1] = nodeColumns_.size();
+    }
+  }
+
   std::size_t numRows_;
   std::vector<std::size_t> nodeStart_;
   std::vector<LO> nodeColumns_;
@@ -134,9 +151,10 @@ Teuchos::RCP<const Map> columnMap(RowColumns<Dim>& columns, const Map& overlap,
 template <int Dim>
 Teuchos::RCP<FECrsGraph> buildGraph(const ParticleGridMap<Dim>& map,
                                     const Kokkos::View<LO*>& entryDofs, const DofMap<Dim>& dofs,
-                                    const std::vector<std::pair<GO, GO>>& extraCouplings) {
+                                    const std::vector<std::pair<GO, GO>>& extraCouplings,
+                                    NodeCoupling coupling) {
   const auto& overlap = *dofs.overlapMap();
-  RowColumns<Dim> columns(map, entryDofs, overlap, extraCouplings);
+  RowColumns<Dim> columns(map, entryDofs, overlap, extraCouplings, coupling);
   Kokkos::DualView<std::size_t*, FECrsGraph::device_type> counts("row counts", columns.numRows());
   // Each row is expanded twice (here for its length, below for its columns) rather than
   // kept: all rows at once would hold the whole graph again (some 400 MB at 10^6 particles).
@@ -168,9 +186,11 @@ Teuchos::RCP<FECrsGraph> buildGraph(const ParticleGridMap<Dim>& map,
 
 template Teuchos::RCP<FECrsGraph> buildGraph<1>(const ParticleGridMap<1>&, const Kokkos::View<LO*>&,
                                                 const DofMap<1>&,
-                                                const std::vector<std::pair<GO, GO>>&);
+                                                const std::vector<std::pair<GO, GO>>&,
+                                                NodeCoupling);
 template Teuchos::RCP<FECrsGraph> buildGraph<2>(const ParticleGridMap<2>&, const Kokkos::View<LO*>&,
                                                 const DofMap<2>&,
-                                                const std::vector<std::pair<GO, GO>>&);
+                                                const std::vector<std::pair<GO, GO>>&,
+                                                NodeCoupling);
 
 }  // namespace impm

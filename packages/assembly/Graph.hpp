@@ -7,6 +7,9 @@
 // its order, then those that other ranks' shared rows will bring (exchanged ahead of the
 // rows).  The FECrsGraph then exports shared rows to their owners.  An overlap-map index is
 // thus also the column index of the same unknown, which the assembly kernels rely on.
+// An explicit step with the lumped mass couples each node with itself only (its Jacobian's
+// nodal block is diagonal): its graph is then the nodes' own blocks and the boundary
+// couplings, a few entries per row instead of all the node pairs of the particles.
 
 #include <utility>
 #include <vector>
@@ -16,9 +19,14 @@
 
 namespace impm {
 
+// Which nodes a node's rows couple with: every node that shares an integration point with
+// it (the stiffness, the consistent mass), or itself alone (the lumped mass).
+enum class NodeCoupling { shared, self };
+
 template <int Dim>
 Teuchos::RCP<FECrsGraph> buildGraph(const ParticleGridMap<Dim>& map,
                                     const Kokkos::View<LO*>& entryDofs, const DofMap<Dim>& dofs,
-                                    const std::vector<std::pair<GO, GO>>& extraCouplings);
+                                    const std::vector<std::pair<GO, GO>>& extraCouplings,
+                                    NodeCoupling coupling = NodeCoupling::shared);
 
 }  // namespace impm

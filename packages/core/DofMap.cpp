@@ -6,12 +6,9 @@
 
 namespace impm {
 
-namespace {
-
-// The distinct values of v, ascending.  v lists a node per particle-node pair, so each
-// node many times, within a range of ids not much wider than the list: there a mark per id
-// finds them in one pass (sorting them took a quarter of an explicit MPM step); otherwise
-// they are sorted.
+// v lists a node per particle-node pair, so each node many times, within a range of ids not
+// much wider than the list: there a mark per id finds them in one pass (sorting them took a quarter
+// of an explicit MPM step); otherwise they are sorted.
 void sortUnique(std::vector<GlobalId>& v) {
   if (v.empty())
     return;
@@ -30,6 +27,8 @@ void sortUnique(std::vector<GlobalId>& v) {
     if (seen[static_cast<std::size_t>(k)])
       v.push_back(first + k);
 }
+
+namespace {
 
 // Owned nodes that some rank touches: every rank marks the nodes it touches, and an Export
 // with ADD brings the marks to the owners.

@@ -27,6 +27,9 @@
 
 namespace impm {
 
+// Leaves the distinct ids of v, ascending.
+void sortUnique(std::vector<GlobalId>& v);
+
 // An extra unknown, owned by the rank that owns its anchor node.
 struct ExtraDof {
   GlobalId anchorNode;

@@ -41,8 +41,10 @@ DynamicStepper<Dim>::DynamicStepper(const DynamicSettings& settings, StepperSetu
     : Stepper<Dim>(std::move(setup), settings.timeStep, settings.minTimeStep),
       settings_(settings),
       fixedGrid_(this->setup_.kinematics == Kinematics::totalLagrangian) {
-  if (settings_.isExplicit())
+  if (settings_.isExplicit()) {
     settings_.mass = MassType::lumped;
+    this->nodeCoupling_ = NodeCoupling::self;  // the Jacobian is c0 M: diagonal in the nodes
+  }
 }
 
 template <int Dim>

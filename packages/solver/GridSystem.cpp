@@ -52,7 +52,7 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
                             Kinematics kinematics, const ParticleSet<Dim>& particles,
                             const Materials<Dim>& materials, const Contributions& contributions,
                             double time, double loadFactor, StepWorkspace<Dim>* workspace,
-                            LayoutCache<Dim>* layouts)
+                            LayoutCache<Dim>* layouts, NodeCoupling coupling)
     : grid_(ownership.grid()),
       kinematics_(kinematics),
       particles_(particles),
@@ -62,7 +62,7 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
       loadFactor_(loadFactor),
       particleGridMap_(buildMapCollectively(ownership, method, kinematics, particles)),
       layout_(layoutOf(LayoutInputs<Dim>{ownership, particleGridMap_, particles, contributions,
-                                         time, loadFactor},
+                                         time, loadFactor, coupling},
                        layouts ? *layouts : ownLayouts_)),
       firstExtra_(layout_->firstExtra),
       dofs_(layout_->dofs),
@@ -373,6 +373,8 @@ void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jac
   }
   if (jacobian) {
     IMPM_TIMER("Jacobian");
+    if (layout_->coupling == NodeCoupling::self && !hasDiagonalJacobian())
+      throw std::logic_error("a Jacobian with node couplings asked of a diagonal graph");
     auto xHost = xo->getLocalViewHost(Tpetra::Access::ReadOnly);
     auto& J = dynamic_cast<FECrsMatrix&>(*jacobian);
     J.beginAssembly();

@@ -32,11 +32,13 @@ class GridSystem : public ResidualModel {
 
   // Builds the map, then the unknowns and the graph or takes them from `layouts` (see
   // solver/SystemLayout.hpp).  Collective.  `workspace`: the per-particle arrays kept
-  // across steps; null `workspace` or `layouts`: the system's own.
+  // across steps; null `workspace` or `layouts`: the system's own.  `coupling`: the graph's
+  // node pairs; NodeCoupling::self serves only a Jacobian with hasDiagonalJacobian().
   GridSystem(const NodeOwnership<Dim>& ownership, Method method, Kinematics kinematics,
              const ParticleSet<Dim>& particles, const Materials<Dim>& materials,
              const Contributions& contributions, double time, double loadFactor,
-             StepWorkspace<Dim>* workspace = nullptr, LayoutCache<Dim>* layouts = nullptr);
+             StepWorkspace<Dim>* workspace = nullptr, LayoutCache<Dim>* layouts = nullptr,
+             NodeCoupling coupling = NodeCoupling::shared);
 
   // The inertia term M a of a dynamic step, a = c0 du - r on the nodal unknowns.  With the
   // lumped mass, M a is m_i a_i on the owned rows (lumpedMass()): one pass over the grid

@@ -30,7 +30,7 @@ template <int Dim>
 Teuchos::RCP<GridSystem<Dim>> Stepper<Dim>::buildSystem(double time, double loadFactor) {
   return Teuchos::rcp(new GridSystem<Dim>(setup_.ownership, setup_.method, setup_.kinematics,
                                           setup_.particles, setup_.materials, setup_.contributions,
-                                          time, loadFactor, &workspace_, &layouts_));
+                                          time, loadFactor, &workspace_, &layouts_, nodeCoupling_));
 }
 
 template <int Dim>

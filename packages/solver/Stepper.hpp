@@ -71,6 +71,9 @@ class Stepper {
   void accept(StepRecord& record, const StepGrid<Dim>& grid, const StepCallback<Dim>& onStep);
 
   StepperSetup<Dim> setup_;
+  // The graph's node pairs: a stepper whose Jacobians are all diagonal in the nodes (an
+  // explicit one) asks for NodeCoupling::self.
+  NodeCoupling nodeCoupling_ = NodeCoupling::shared;
   StepperState state_;     // as the step under way changes it
   StepperState accepted_;  // at the last accepted step
   std::ostream* log_;      // rank 0: the progress log; elsewhere null

@@ -23,14 +23,14 @@ bool onEveryRank(bool mine, const Comm& comm) {
 // contribution's prepare(), which the step needs whether or not the layout is reused.
 template <int Dim>
 LayoutKey<Dim> keyOf(const NodeOwnership<Dim>& ownership, const ParticleGridMap<Dim>& map,
-                     const Contributions<Dim>& contributions, std::vector<int>& firstExtra,
-                     std::vector<ExtraDof>& extras) {
+                     const Contributions<Dim>& contributions, NodeCoupling coupling,
+                     std::vector<int>& firstExtra, std::vector<ExtraDof>& extras) {
   LayoutKey<Dim> key;
   key.ownership = &ownership;
   key.ownershipRevision = ownership.revision();
+  key.coupling = coupling;
   auto rowPtr = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), map.rowPtr);
   auto node = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), map.node);
-  key.rowPtr.assign(rowPtr.data(), rowPtr.data() + rowPtr.extent(0));
   key.touched.assign(node.data(), node.data() + node.extent(0));
   for (const auto& c : contributions) {
     firstExtra.push_back(static_cast<int>(extras.size()));
@@ -38,6 +38,19 @@ LayoutKey<Dim> keyOf(const NodeOwnership<Dim>& ownership, const ParticleGridMap<
   }
   for (const auto& e : extras)
     key.extraNodes.push_back(e.anchorNode);
+  if (coupling == NodeCoupling::shared) {
+    key.rowPtr.assign(rowPtr.data(), rowPtr.data() + rowPtr.extent(0));
+    return key;
+  }
+  // Without node pairs in the graph the layout depends on which nodes the integration points
+  // touch, not on which point touches which: the key lists the distinct nodes, those of the
+  // map and those of the contributions apart (so that a kept layout's check that every
+  // node is integrated still holds).
+  std::vector<GlobalId> others(key.touched.begin() + node.extent(0), key.touched.end());
+  key.touched.resize(node.extent(0));
+  sortUnique(key.touched);
+  sortUnique(others);
+  key.touched.insert(key.touched.end(), others.begin(), others.end());
   return key;
 }
 
@@ -78,9 +91,10 @@ std::shared_ptr<SystemLayout<Dim>> numberUnknowns(const NodeOwnership<Dim>& owne
                                                   const ParticleGridMap<Dim>& map,
                                                   std::vector<int> firstExtra,
                                                   std::vector<GlobalId> touched,
-                                                  const std::vector<ExtraDof>& extras) {
-  auto l = std::make_shared<SystemLayout<Dim>>(std::move(firstExtra),
-                                               DofMap<Dim>(ownership, std::move(touched), extras));
+                                                  const std::vector<ExtraDof>& extras,
+                                                  NodeCoupling coupling) {
+  auto l = std::make_shared<SystemLayout<Dim>>(
+      std::move(firstExtra), DofMap<Dim>(ownership, std::move(touched), extras), coupling);
   const auto& dofs = l->dofs;
   // A failure on one rank must stop every rank (the next steps are collective).
   collectively(*ownership.comm(), [&] { l->entryDofs = impm::entryDofs(map, *dofs.overlapMap()); });
@@ -140,14 +154,20 @@ std::shared_ptr<const SystemLayout<Dim>> layoutOf(const LayoutInputs<Dim>& in,
   const Comm& comm = *in.ownership.comm();
   std::vector<int> firstExtra;
   std::vector<ExtraDof> extras;
-  auto key = keyOf(in.ownership, in.map, in.contributions, firstExtra, extras);
+  auto key = keyOf(in.ownership, in.map, in.contributions, in.coupling, firstExtra, extras);
   auto kept = cache.find(key, comm);
   std::shared_ptr<SystemLayout<Dim>> fresh;
   if (!kept) {
-    fresh = numberUnknowns(in.ownership, in.map, firstExtra, key.touched, extras);
+    fresh = numberUnknowns(in.ownership, in.map, firstExtra, key.touched, extras, in.coupling);
     cache.newUnknowns(*fresh->dofs.ownedMap());
   }
-  const SystemLayout<Dim>& unknowns = kept ? *kept : *fresh;
+  if (kept && in.coupling == NodeCoupling::self) {
+    // The same nodes, other entries: their overlap indices are new, the rest is kept.
+    fresh = std::make_shared<SystemLayout<Dim>>(*kept);
+    collectively(comm,
+                 [&] { fresh->entryDofs = impm::entryDofs(in.map, *fresh->dofs.overlapMap()); });
+  }
+  const SystemLayout<Dim>& unknowns = fresh ? *fresh : *kept;
   // The contributions' couplings, read against these unknowns.
   std::vector<std::pair<GO, GO>> couplings;
   for (std::size_t c = 0; c < in.contributions.size(); ++c)
@@ -159,14 +179,15 @@ std::shared_ptr<const SystemLayout<Dim>> layoutOf(const LayoutInputs<Dim>& in,
     couplings.emplace_back(padding, padding);
   if (kept && cache.sameCouplings(couplings, comm)) {
     cache.keep(std::move(key), kept);
-    return kept;
+    return fresh ? fresh : kept;
   }
   if (!fresh)
     fresh = std::make_shared<SystemLayout<Dim>>(*kept);
   fresh->couplings = std::move(couplings);
   {
     IMPM_TIMER("graph");
-    fresh->graph = buildGraph(in.map, fresh->entryDofs, fresh->dofs, fresh->couplings);
+    fresh->graph =
+        buildGraph(in.map, fresh->entryDofs, fresh->dofs, fresh->couplings, fresh->coupling);
   }
   cache.keep(std::move(key), fresh);
   return fresh;

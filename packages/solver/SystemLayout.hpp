@@ -7,17 +7,24 @@
 //   - the nodes and extra unknowns the contributions add (Contribution::prepare),
 //   - the couplings the contributions add (Contribution::couplings),
 //   - the ownership of the nodes (a repartition changes it),
+//   - which nodes a node couples with (assembly/Graph.hpp: all that share a particle, or
+//     itself alone in explicit steps with the lumped mass),
 // not on the weights phi_ip, G_ip.  A stepper keeps the last layout in a LayoutCache; the
 // next system takes it over when all of these are the same on every rank (no particle
 // entered or left a node's support, no migration reordered the particles), and builds a
 // new one otherwise.  A reused layout is identical to the one that would be built, so the
 // results do not change at all.
+// When each node couples with itself alone, only the overlap indices of the entries depend
+// on the (particle, node) pairs; the rest depends on the set of nodes the map touches.  The
+// key is then that set, and a kept layout serves with the entries' indices made anew (an
+// explicit MPM step whose particles moved within the same nodes' supports).
 
 #include <functional>
 #include <memory>
 #include <utility>
 #include <vector>
 
+#include "assembly/Graph.hpp"
 #include "assembly/Kinematics.hpp"
 #include "core/DofMap.hpp"
 #include "solver/Contribution.hpp"
@@ -26,11 +33,12 @@ namespace impm {
 
 template <int Dim>
 struct SystemLayout {
-  SystemLayout(std::vector<int> extras, DofMap<Dim> unknowns)
-      : firstExtra(std::move(extras)), dofs(std::move(unknowns)) {}
+  SystemLayout(std::vector<int> extras, DofMap<Dim> unknowns, NodeCoupling nodes)
+      : firstExtra(std::move(extras)), dofs(std::move(unknowns)), coupling(nodes) {}
 
   std::vector<int> firstExtra;  // each contribution's first extra unknown
   DofMap<Dim> dofs;
+  NodeCoupling coupling;  // the graph's
   EntryDofs<> entryDofs;  // overlap-map index of each map entry's node
   Teuchos::RCP<const Import> importer;
   Teuchos::RCP<const Vector> nodalMask;      // 1 on nodal unknowns, 0 on extra unknowns
@@ -44,13 +52,15 @@ template <int Dim>
 struct LayoutKey {
   const NodeOwnership<Dim>* ownership = nullptr;
   int ownershipRevision = -1;
+  NodeCoupling coupling = NodeCoupling::shared;
   std::vector<std::size_t> rowPtr;   // the map's rows
   std::vector<GlobalId> touched;     // the map's nodes, then the contributions'
   std::vector<GlobalId> extraNodes;  // the anchor node of every extra unknown
 
   bool operator==(const LayoutKey& o) const {
     return ownership == o.ownership && ownershipRevision == o.ownershipRevision &&
-           rowPtr == o.rowPtr && touched == o.touched && extraNodes == o.extraNodes;
+           coupling == o.coupling && rowPtr == o.rowPtr && touched == o.touched &&
+           extraNodes == o.extraNodes;
   }
 };
 
@@ -94,6 +104,7 @@ struct LayoutInputs {
   const ParticleSet<Dim>& particles;
   const Contributions<Dim>& contributions;
   double time, loadFactor;  // for the contributions' context
+  NodeCoupling coupling;
 };
 
 // The layout of the system on `in.map`: the cache's when nothing it depends on changed,

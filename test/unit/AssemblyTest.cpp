@@ -339,6 +339,21 @@ TEST(Graph, OwnedRowsHoldTheColumnsOfEveryRanksParticles) {
     graph->getGlobalRowCopy(row, cols(), n);
     EXPECT_EQ(std::set<GO>(cols.begin(), cols.begin() + n), expected) << "row " << row;
   }
+
+  // Each node coupled with itself only (an explicit step's lumped mass), and every rank
+  // coupling the hub with its first particle's other node: those couplings reach the hub's
+  // owner, and every other row holds its own column alone.
+  const GlobalId mine = 2 + 4 * rank;
+  const auto diagonal = buildGraph(map, rows, dofs, {{hub, mine}}, NodeCoupling::self);
+  for (const GO row : owned) {
+    std::set<GO> expected{row};
+    for (int r = 0; r < size && row == hub; ++r)
+      expected.insert(2 + 4 * r);
+    Teuchos::Array<GO> cols(diagonal->getNumEntriesInGlobalRow(row));
+    std::size_t n = 0;
+    diagonal->getGlobalRowCopy(row, cols(), n);
+    EXPECT_EQ(std::set<GO>(cols.begin(), cols.begin() + n), expected) << "row " << row;
+  }
 }
 
 }  // namespace
