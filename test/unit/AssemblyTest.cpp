@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <set>
 
 #include <Teuchos_DefaultComm.hpp>
@@ -290,6 +291,37 @@ TEST(Kinematics, StepStartTangentIsTheDerivativeOfStepStartStress) {
   stressRelativeToStepStart<D>(Kinematics::updatedLagrangian, Fn, P, A, Pn, A);
   for (int k = 0; k < 16; ++k)
     EXPECT_EQ(A.data()[k], An.data()[k]) << k;
+}
+
+// The entries' overlap indices come from a table over the range of their nodes when it is
+// narrow, from the map's lookup otherwise: both must be the map's local index, in 1-D and
+// 2-D (a node's first component).
+template <int Dim>
+void expectEntryDofsOfTheOverlapMap(const std::vector<GlobalId>& nodes) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  std::array<int, Dim> cells;
+  cells.fill(Dim == 1 ? 2000 : 100);
+  std::array<double, Dim> lower{}, upper;
+  upper.fill(1.0);
+  NodeOwnership<Dim> own(makeGridGeometry<Dim>(lower, upper, cells), comm);
+  ParticleGridMap<Dim> map;
+  map.rowPtr = decltype(map.rowPtr)("rowPtr", 2);
+  map.rowPtr(1) = nodes.size();
+  map.node = decltype(map.node)("node", nodes.size());
+  for (std::size_t k = 0; k < nodes.size(); ++k)
+    map.node(k) = nodes[k];
+  DofMap<Dim> dofs(own, nodes, {});
+  const auto lids = entryDofs(map, *dofs.overlapMap());
+  for (std::size_t k = 0; k < nodes.size(); ++k)
+    EXPECT_EQ(lids(k), dofs.overlapMap()->getLocalElement(nodes[k] * Dim)) << "entry " << k;
+}
+
+TEST(EntryDofs, AreTheOverlapMapsIndicesOfNarrowAndWideNodeRanges) {
+  const GlobalId rank = Teuchos::DefaultComm<int>::getComm()->getRank();
+  expectEntryDofsOfTheOverlapMap<1>({7 + rank, 5, 6, 5, 9, 8, 7, 6});  // narrow: tabled
+  expectEntryDofsOfTheOverlapMap<1>({1900, 3, 1900, 1000 + rank});     // wide: looked up
+  expectEntryDofsOfTheOverlapMap<2>({203, 202, 204 + rank, 203, 205, 202});
+  expectEntryDofsOfTheOverlapMap<2>({10000, 12, 101 + rank});
 }
 
 // Every rank's particles couple a hub node with nodes no other rank touches, so the hub's
