@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/Errors.hpp"
+#include "core/Types.hpp"
 
 namespace impm {
 
@@ -20,6 +21,27 @@ Vector unit(const Teuchos::RCP<const Map>& map, GO g) {
   return e;
 }
 
+// J's diagonal.  A grid system's column map begins with its row map (assembly/Graph.hpp),
+// so row r's diagonal entry is in column r: one search of the row, where Tpetra's copy looks
+// every row's column up in the column map's hash table (a twentieth of an explicit gimp
+// step).  Other matrices take Tpetra's copy.
+void diagonalOf(const CrsMatrix& J, Vector& d) {
+  if (!J.getColMap()->isLocallyFitted(*J.getRowMap())) {
+    J.getLocalDiagCopy(d);
+    return;
+  }
+  const auto K = J.getLocalMatrixDevice();
+  auto out = d.getLocalViewDevice(Tpetra::Access::OverwriteAll);
+  Kokkos::parallel_for(
+      "impm::diagonalOf", RangePolicy<DefaultExecSpace>(0, K.numRows()), KOKKOS_LAMBDA(const LO r) {
+        const auto row = K.row(r);
+        out(r, 0) = 0.0;
+        for (LO k = 0; k < row.length; ++k)
+          if (row.colidx(k) == r)
+            out(r, 0) = row.value(k);
+      });
+}
+
 }  // namespace
 
 DiagonalElimination::DiagonalElimination(const CrsMatrix& J, const Vector& nodal,
@@ -29,7 +51,7 @@ DiagonalElimination::DiagonalElimination(const CrsMatrix& J, const Vector& nodal
       dinv_(map_),
       lu_(static_cast<int>(extras.size()), static_cast<int>(extras.size())),
       pivots_(extras.size()) {
-  J.getLocalDiagCopy(dinv_);
+  diagonalOf(J, dinv_);
   {
     auto d = dinv_.getLocalViewHost(Tpetra::Access::ReadWrite);
     auto m = nodal.getLocalViewHost(Tpetra::Access::ReadOnly);
