@@ -141,11 +141,14 @@ void GridSystem<Dim>::eliminateConstrained(const std::vector<std::pair<LO, doubl
       "impm::eliminateConstrained", RangePolicy<DefaultExecSpace>(0, K.numRows()),
       KOKKOS_LAMBDA(const LO r) {
         auto row = K.row(r);
-        const LO diagonal = colMap.getLocalElement(rowMap.getGlobalElement(r));
-        for (LO k = 0; k < row.length; ++k)
-          if (fixedRow(r, 0) != 0.0)
+        if (fixedRow(r, 0) != 0.0) {
+          const LO diagonal = colMap.getLocalElement(rowMap.getGlobalElement(r));
+          for (LO k = 0; k < row.length; ++k)
             row.value(k) = row.colidx(k) == diagonal ? scale : 0.0;
-          else if (fixedCol(row.colidx(k), 0) != 0.0)
+          return;
+        }
+        for (LO k = 0; k < row.length; ++k)
+          if (fixedCol(row.colidx(k), 0) != 0.0)
             row.value(k) = 0.0;
       });
 }
