@@ -103,6 +103,7 @@ Teuchos::RCP<Vector> DynamicStepper<Dim>::fromParticles(
 
 template <int Dim>
 void DynamicStepper<Dim>::gridVelocityAndAcceleration(GridSystem<Dim>& system, const Vector& mass,
+                                                      const Acceleration& s,
                                                       Teuchos::RCP<Vector>& v,
                                                       Teuchos::RCP<Vector>& a) {
   if (fixedGrid_) {
@@ -110,7 +111,9 @@ void DynamicStepper<Dim>::gridVelocityAndAcceleration(GridSystem<Dim>& system, c
     return;
   }
   v = fromParticles(system, mass, this->setup_.particles.v);
-  a = fromParticles(system, mass, this->setup_.particles.a);
+  const bool used = !settings_.isExplicit() || s.ra != 0.0;  // Newmark's v update reads it
+  a = used ? fromParticles(system, mass, this->setup_.particles.a)
+           : Teuchos::rcp(new Vector(system.unknownMap()));
 }
 
 template <int Dim>
@@ -331,8 +334,9 @@ void DynamicStepper<Dim>::run(const StepCallback<Dim>& onStep) {
     if (!fixedGrid_ || !mass_)  // a fixed grid's particles keep their masses and nodes
       mass_ = system->lumpedMass();
     const auto mass = mass_;
+    const Acceleration s = acceleration(h);
     Teuchos::RCP<Vector> v, a;
-    gridVelocityAndAcceleration(*system, *mass, v, a);
+    gridVelocityAndAcceleration(*system, *mass, s, v, a);
     if (!state.started && !settings_.isExplicit() && settings_.equilibriumInitialAcceleration)
       a = equilibriumAcceleration(*system, *v, h);
     if (fixedGrid_ && !state.started)
@@ -340,7 +344,6 @@ void DynamicStepper<Dim>::run(const StepCallback<Dim>& onStep) {
     state.started = true;
     // 2. Newton on the grid.
     system->freezeInternalForce(settings_.isExplicit());
-    const Acceleration s = acceleration(h);
     Teuchos::RCP<Vector> du;
     NewtonReport report;
     if (!solveStep(*system, s, *v, *a, h, du, report)) {

@@ -57,8 +57,11 @@ class DynamicStepper : public Stepper<Dim> {
   };
   Acceleration acceleration(double dt) const;
   Teuchos::RCP<GridSystem<Dim>> systemAt(double time);
+  // v^n and a^n on the grid; a^n is zero when the integrator does not use it (the explicit
+  // updates, whose s.ra is 0), which saves a particle-to-grid sum.
   void gridVelocityAndAcceleration(GridSystem<Dim>& system, const Vector& mass,
-                                   Teuchos::RCP<Vector>& v, Teuchos::RCP<Vector>& a);
+                                   const Acceleration& s, Teuchos::RCP<Vector>& v,
+                                   Teuchos::RCP<Vector>& a);
   Teuchos::RCP<Vector> fromParticles(GridSystem<Dim>& system, const Vector& mass,
                                      const typename ParticleSet<Dim>::Vectors& q);
   void startFixedGrid(GridSystem<Dim>& system);
