@@ -1,8 +1,10 @@
 #pragma once
 // Builds the ragged particle-grid map (eq. 1.39-1.40) from any weights.  A weights type says
-// which box of grid nodes a particle may touch (nodeBox) and the weights for one node
-// (evaluate); entries whose weights vanish are left out, so Y lists exactly the nodes whose
-// basis function is non-zero somewhere on the particle's integration domain.
+// which box of grid nodes a particle may touch (nodeBox, which also fills the type's
+// Particle: what every node's weights read of the particle, its domain's ends or corners,
+// computed once per particle) and the weights for one node (evaluate); entries whose weights
+// vanish are left out, so Y lists exactly the nodes whose basis function is non-zero
+// somewhere on the particle's integration domain.
 
 #include <sstream>
 
@@ -133,7 +135,8 @@ ParticleGridMap<Dim, Space> buildParticleGridMap(const Weights& weights,
       "impm::countBoxNodes", Kokkos::RangePolicy<Exec>(0, n),
       KOKKOS_LAMBDA(const int p, int& outside) {
         int lo[Dim] = {}, hi[Dim] = {};
-        if (!weights.nodeBox(p, lo, hi, kGridTolerance)) {
+        typename Weights::Particle at;
+        if (!weights.nodeBox(p, at, lo, hi, kGridTolerance)) {
           if (p < outside)
             outside = p;
           boxPtr(p + 1) = 0;
@@ -167,11 +170,12 @@ ParticleGridMap<Dim, Space> buildParticleGridMap(const Weights& weights,
       "impm::fillMapEntries", Kokkos::RangePolicy<Exec>(0, n),
       KOKKOS_LAMBDA(const int p, std::size_t& sum) {
         int lo[Dim] = {}, hi[Dim] = {};
-        weights.nodeBox(p, lo, hi, kGridTolerance);
+        typename Weights::Particle at;
+        weights.nodeBox(p, at, lo, hi, kGridTolerance);
         std::size_t k = boxPtr(p);
         detail::forEachNodeInBox<Dim>(grid, lo, hi, [&](const int* idx, GlobalId id) {
           double phi, grad[Dim];
-          weights.evaluate(p, lo, idx, phi, grad);
+          weights.evaluate(at, lo, idx, phi, grad);
           if (detail::negligible<Dim>(grid, phi, grad))
             return;
           node(k) = id;

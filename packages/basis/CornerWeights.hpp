@@ -32,7 +32,7 @@ struct CornerWeights {
   GridGeometry<Dim> grid;
   typename ParticleSet<Dim, Space>::Vectors x;
   Table corners;  // (p, c * Dim + d), counter-clockwise (2-D)
-  // w_t and g_t of every particle, computed once (evaluate runs for every node, twice).
+  // w_t and g_t of every particle, computed once (evaluate runs for every node).
   Kokkos::View<double* [kCorners], typename Space::memory_space> weight;
   Kokkos::View<double* [kCorners][Dim], typename Space::memory_space> gradientWeight;
 
@@ -71,8 +71,22 @@ struct CornerWeights {
       g[d] = clipToGrid(grid, d, grid.gridCoord(d, corners(p, c * Dim + d)));
   }
 
-  KOKKOS_INLINE_FUNCTION bool nodeBox(int p, int lo[Dim], int hi[Dim], double tol) const {
-    return cornerNodeBox<Dim>(grid, x, p, kCorners, *this, lo, hi, tol);
+  // What every node's weights read of particle p: its index and its corners (grid units,
+  // clipped) in tensor order.
+  struct Particle {
+    int p;
+    double g[kCorners][Dim];
+  };
+
+  KOKKOS_INLINE_FUNCTION bool nodeBox(int p, Particle& at, int lo[Dim], int hi[Dim],
+                                      double tol) const {
+    if (!centreOnGrid<Dim>(grid, x, p, tol))
+      return false;
+    at.p = p;
+    for (int t = 0; t < kCorners; ++t)
+      corner(p, stored(t), at.g[t]);
+    cornerNodeBox<Dim, kCorners>(grid, at.g, lo, hi);
+    return true;
   }
 
   // w[t] and g[t][a] of the tensor corners t (above), by 2^Dim-point Gauss quadrature.
@@ -115,20 +129,18 @@ struct CornerWeights {
     }
   }
 
-  KOKKOS_INLINE_FUNCTION void evaluate(int p, const int* /*lo*/, const int node[Dim], double& phi,
-                                       double grad[Dim]) const {
+  KOKKOS_INLINE_FUNCTION void evaluate(const Particle& at, const int* /*lo*/, const int node[Dim],
+                                       double& phi, double grad[Dim]) const {
     phi = 0.0;
     for (int a = 0; a < Dim; ++a)
       grad[a] = 0.0;
     for (int t = 0; t < kCorners; ++t) {
-      double xc[Dim];
-      corner(p, stored(t), xc);
       double n = 1.0;
       for (int d = 0; d < Dim; ++d)
-        n *= tent(xc[d] - node[d]);
-      phi += weight(p, t) * n;
+        n *= tent(at.g[t][d] - node[d]);
+      phi += weight(at.p, t) * n;
       for (int a = 0; a < Dim; ++a)
-        grad[a] += gradientWeight(p, t, a) * n;
+        grad[a] += gradientWeight(at.p, t, a) * n;
     }
   }
 };

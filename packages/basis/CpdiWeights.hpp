@@ -14,32 +14,34 @@
 
 namespace impm {
 
-// The nodes a domain with corners touches: those of the cells that hold its corners (eq.
-// 1.40), found from weights.corner(p, c, g) (grid units, clipped).  False when the
-// particle's centre x(p) has left the grid.
-template <int Dim, class Vectors, class Weights>
-KOKKOS_INLINE_FUNCTION bool cornerNodeBox(const GridGeometry<Dim>& grid, const Vectors& x, int p,
-                                          int corners, const Weights& weights, int lo[Dim],
-                                          int hi[Dim], double tol) {
-  for (int d = 0; d < Dim; ++d) {
+// Whether particle p's centre x(p) lies on the grid (up to tol cells).
+template <int Dim, class Vectors>
+KOKKOS_INLINE_FUNCTION bool centreOnGrid(const GridGeometry<Dim>& grid, const Vectors& x, int p,
+                                         double tol) {
+  for (int d = 0; d < Dim; ++d)
     if (!centreInside(grid, d, grid.gridCoord(d, x(p, d)), tol))
       return false;
+  return true;
+}
+
+// The nodes a domain with corners g (grid units, clipped) touches: those of the cells that
+// hold its corners (eq. 1.40).
+template <int Dim, int Corners>
+KOKKOS_INLINE_FUNCTION void cornerNodeBox(const GridGeometry<Dim>& grid,
+                                          const double g[Corners][Dim], int lo[Dim], int hi[Dim]) {
+  for (int d = 0; d < Dim; ++d) {
     lo[d] = grid.cells[d];
     hi[d] = 0;
   }
-  for (int c = 0; c < corners; ++c) {
-    double g[Dim];
-    weights.corner(p, c, g);
+  for (int c = 0; c < Corners; ++c)
     for (int d = 0; d < Dim; ++d) {
-      int cell = static_cast<int>(Kokkos::Experimental::floor(g[d]));
+      int cell = static_cast<int>(Kokkos::Experimental::floor(g[c][d]));
       cell = cell < 0 ? 0 : (cell >= grid.cells[d] ? grid.cells[d] - 1 : cell);
       if (cell < lo[d])
         lo[d] = cell;
       if (cell + 1 > hi[d])
         hi[d] = cell + 1;
     }
-  }
-  return true;
 }
 
 template <int Dim, class Space = DefaultExecSpace>
@@ -64,20 +66,36 @@ struct CpdiWeights {
     }
   }
 
-  KOKKOS_INLINE_FUNCTION bool nodeBox(int p, int lo[Dim], int hi[Dim], double tol) const {
-    return cornerNodeBox<Dim>(grid, x, p, kCorners, *this, lo, hi, tol);
+  // What every node's weights read of particle p: its corners (grid units, clipped) and
+  // R^-1.
+  struct Particle {
+    double g[kCorners][Dim];
+    double Rinv[Dim][Dim];
+  };
+
+  KOKKOS_INLINE_FUNCTION bool nodeBox(int p, Particle& at, int lo[Dim], int hi[Dim],
+                                      double tol) const {
+    if (!centreOnGrid<Dim>(grid, x, p, tol))
+      return false;
+    for (int c = 0; c < kCorners; ++c)
+      corner(p, c, at.g[c]);
+    cornerNodeBox<Dim, kCorners>(grid, at.g, lo, hi);
+    double R[Dim][Dim];
+    for (int a = 0; a < Dim; ++a)
+      for (int k = 0; k < Dim; ++k)
+        R[a][k] = domain(p, a, k);
+    inverse<Dim>(R, determinant<Dim>(R), at.Rinv);
+    return true;
   }
 
-  KOKKOS_INLINE_FUNCTION void evaluate(int p, const int* /*lo*/, const int node[Dim], double& phi,
-                                       double grad[Dim]) const {
+  KOKKOS_INLINE_FUNCTION void evaluate(const Particle& at, const int* /*lo*/, const int node[Dim],
+                                       double& phi, double grad[Dim]) const {
     double gxi[Dim] = {};
     phi = 0.0;
     for (int c = 0; c < kCorners; ++c) {
-      double g[Dim];
-      corner(p, c, g);
       double n = 1.0;
       for (int d = 0; d < Dim; ++d)
-        n *= tent(g[d] - node[d]);
+        n *= tent(at.g[c][d] - node[d]);
       phi += n;
       for (int k = 0; k < Dim; ++k)
         gxi[k] += sign(c, k) * n;
@@ -85,15 +103,10 @@ struct CpdiWeights {
     const double scale = 1.0 / kCorners;
     phi *= scale;
     // grad = R^-T gxi.
-    double R[Dim][Dim], Rinv[Dim][Dim];
-    for (int a = 0; a < Dim; ++a)
-      for (int k = 0; k < Dim; ++k)
-        R[a][k] = domain(p, a, k);
-    inverse<Dim>(R, determinant<Dim>(R), Rinv);
     for (int d = 0; d < Dim; ++d) {
       grad[d] = 0.0;
       for (int k = 0; k < Dim; ++k)
-        grad[d] += scale * Rinv[k][d] * gxi[k];
+        grad[d] += scale * at.Rinv[k][d] * gxi[k];
     }
   }
 };

@@ -27,26 +27,30 @@ struct GimpWeights {
     b = clipToGrid(grid, d, grid.gridCoord(d, x(p, d) + l));
   }
 
-  KOKKOS_INLINE_FUNCTION bool nodeBox(int p, int lo[Dim], int hi[Dim], double tol) const {
+  // What every node's weights read of particle p: its domain's ends along each direction.
+  struct Particle {
+    double a[Dim], b[Dim];
+  };
+
+  KOKKOS_INLINE_FUNCTION bool nodeBox(int p, Particle& at, int lo[Dim], int hi[Dim],
+                                      double tol) const {
     for (int d = 0; d < Dim; ++d) {
       if (!centreInside(grid, d, grid.gridCoord(d, x(p, d)), tol))
         return false;
-      double a, b;
-      ends(p, d, a, b);
-      lo[d] = a <= 0 ? 0 : static_cast<int>(Kokkos::Experimental::floor(a));
-      hi[d] = static_cast<int>(Kokkos::Experimental::ceil(b));
+      ends(p, d, at.a[d], at.b[d]);
+      lo[d] = at.a[d] <= 0 ? 0 : static_cast<int>(Kokkos::Experimental::floor(at.a[d]));
+      hi[d] = static_cast<int>(Kokkos::Experimental::ceil(at.b[d]));
       if (hi[d] > grid.cells[d])
         hi[d] = grid.cells[d];
     }
     return true;
   }
 
-  KOKKOS_INLINE_FUNCTION void evaluate(int p, const int* /*lo*/, const int node[Dim], double& phi,
-                                       double grad[Dim]) const {
+  KOKKOS_INLINE_FUNCTION void evaluate(const Particle& at, const int* /*lo*/, const int node[Dim],
+                                       double& phi, double grad[Dim]) const {
     double n[Dim], dn[Dim];
     for (int d = 0; d < Dim; ++d) {
-      double a, b;
-      ends(p, d, a, b);
+      const double a = at.a[d], b = at.b[d];
       n[d] = tentAverage(a - node[d], b - node[d]);
       dn[d] = (tent(b - node[d]) - tent(a - node[d])) / ((b - a) * grid.spacing[d]);
     }

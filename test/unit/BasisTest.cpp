@@ -307,13 +307,17 @@ TEST(CornerWeights, ParallelogramGivesCpdiAndTriangleGivesCpti) {
     for (int d = 0; d < 2; ++d)
       c(0, 2 * k + d) = x(0, d) + sign[k][0] * r(0, d, 0) + sign[k][1] * r(0, d, 1);
   CornerWeights<2> corners(grid, ps, c);
-  const int lo[2] = {0, 0};
+  int lo[2], hi[2];
+  CpdiWeights<2>::Particle cpdiAt;
+  CornerWeights<2>::Particle cornersAt;
+  ASSERT_TRUE(cpdi.nodeBox(0, cpdiAt, lo, hi, 0.0));
+  ASSERT_TRUE(corners.nodeBox(0, cornersAt, lo, hi, 0.0));
   for (int j = 0; j <= 4; ++j)
     for (int i = 0; i <= 4; ++i) {
       const int node[2] = {i, j};
       double phi1, phi2, g1[2], g2[2];
-      cpdi.evaluate(0, lo, node, phi1, g1);
-      corners.evaluate(0, lo, node, phi2, g2);
+      cpdi.evaluate(cpdiAt, lo, node, phi1, g1);
+      corners.evaluate(cornersAt, lo, node, phi2, g2);
       EXPECT_NEAR(phi1, phi2, 1e-14);
       for (int d = 0; d < 2; ++d)
         EXPECT_NEAR(g1[d], g2[d], 1e-12);
