@@ -148,14 +148,14 @@ Teuchos::ParameterList defaultLinearSolverParameters(OperatorKind kind, int dim,
 
 namespace {
 
-// Whether a deck's list names a parameter of MueLu's smoother.
-bool namesSmoother(const Teuchos::ParameterList& deck) {
+// Whether a deck's MueLu list names a parameter that begins with prefix.
+bool namesMueLu(const Teuchos::ParameterList& deck, const std::string& prefix) {
   if (!deck.isSublist("Preconditioner Types") ||
       !deck.sublist("Preconditioner Types").isSublist("MueLu"))
     return false;
   const auto& muelu = deck.sublist("Preconditioner Types").sublist("MueLu");
   for (auto it = muelu.begin(); it != muelu.end(); ++it)
-    if (muelu.name(it).rfind("smoother:", 0) == 0)
+    if (muelu.name(it).rfind(prefix, 0) == 0)
       return true;
   return false;
 }
@@ -180,12 +180,17 @@ Teuchos::ParameterList mergedLinearSolverParameters(const Teuchos::ParameterList
     p.sublist("Preconditioner Types").sublist("Ifpack2").remove("Ifpack2 Settings", false);
   // Likewise the default's MueLu smoother is one choice: a deck that names any `smoother:`
   // parameter starts from none (MueLu would take the default's `smoother: pre type` over the
-  // deck's `smoother: type`).
-  if (namesSmoother(deck)) {
+  // deck's `smoother: type`); and a deck that names its coarse solver drops the default's
+  // coarse parameters, which belong to the default's coarse type (Gauss-Seidel sweeps mean
+  // nothing to a direct solver, which rejects them).
+  if (namesMueLu(p, "")) {  // a default with MueLu
     auto& muelu = p.sublist("Preconditioner Types").sublist("MueLu");
-    for (const char* key : {"smoother: pre type", "smoother: pre params", "smoother: post type",
-                            "smoother: post params"})
-      muelu.remove(key, false);
+    if (namesMueLu(deck, "smoother:"))
+      for (const char* key : {"smoother: pre type", "smoother: pre params", "smoother: post type",
+                              "smoother: post params"})
+        muelu.remove(key, false);
+    if (namesMueLu(deck, "coarse: type"))
+      muelu.remove("coarse: params", false);
   }
   p.setParameters(deck);
   if (!deck.isParameter("Preconditioner Type") && deck.isSublist("Preconditioner Types")) {

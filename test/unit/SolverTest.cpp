@@ -386,6 +386,32 @@ TEST(LinearSolver, DeckSmootherReplacesTheDefaultOne) {
   EXPECT_EQ(replaced.get<double>("aggregation: drop tol"), 0.05);  // the rest stays
 }
 
+// On several ranks the default's coarse solver is Gauss-Seidel sweeps: a deck that names
+// another coarse type drops their parameters (Amesos2's solvers reject them, Ifpack2's
+// ignore them), one that only tunes the coarse level keeps them.
+TEST(LinearSolver, DeckCoarseTypeReplacesTheDefaultCoarseParameters) {
+  const auto muelu = [](const Teuchos::ParameterList& deck) {
+    return mergedLinearSolverParameters(deck, OperatorKind::symmetricStiffness, 2, 2)
+        .sublist("Preconditioner Types")
+        .sublist("MueLu");
+  };
+  Teuchos::ParameterList size;
+  size.sublist("Preconditioner Types").sublist("MueLu").set("coarse: max size", 500);
+  const auto kept = muelu(size);
+  EXPECT_EQ(kept.get<std::string>("coarse: type"), "RELAXATION");
+  EXPECT_EQ(kept.sublist("coarse: params").get<int>("relaxation: sweeps"), 30);
+  Teuchos::ParameterList ilut;
+  ilut.sublist("Preconditioner Types").sublist("MueLu").set("coarse: type", std::string("ILUT"));
+  const auto replaced = muelu(ilut);
+  EXPECT_EQ(replaced.get<std::string>("coarse: type"), "ILUT");
+  EXPECT_FALSE(replaced.isParameter("coarse: params"));
+  EXPECT_EQ(replaced.get<double>("aggregation: drop tol"), 0.05);  // the rest stays
+  // The 1-D default has no MueLu list, and naming none leaves it so.
+  EXPECT_FALSE(mergedLinearSolverParameters(Teuchos::ParameterList(), OperatorKind::small, 1, 2)
+                   .sublist("Preconditioner Types")
+                   .isSublist("MueLu"));
+}
+
 TEST(LinearSolver, RilukByKokkosKernels) {
   Teuchos::ParameterList p;
   ifpack2Settings(p, "RILUK").set("fact: type", std::string("KSPILUK"));
