@@ -61,14 +61,15 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
       time_(time),
       loadFactor_(loadFactor),
       particleGridMap_(buildMapCollectively(ownership, method, kinematics, particles)),
-      layout_(layoutOf(LayoutInputs<Dim>{ownership, particleGridMap_, particles, contributions,
-                                         time, loadFactor, coupling},
-                       layouts ? *layouts : ownLayouts_)),
-      firstExtra_(layout_->firstExtra),
-      dofs_(layout_->dofs),
-      entryDofs_(layout_->entryDofs),
-      graph_(layout_->graph),
-      importer_(layout_->importer),
+      laidOut_(layoutOf(LayoutInputs<Dim>{ownership, particleGridMap_, particles, contributions,
+                                          time, loadFactor, coupling},
+                        layouts ? *layouts : ownLayouts_)),
+      layout_(*laidOut_.layout),
+      firstExtra_(layout_.firstExtra),
+      dofs_(layout_.dofs),
+      entryDofs_(laidOut_.entryDofs),
+      graph_(layout_.graph),
+      importer_(layout_.importer),
       work_((workspace ? *workspace : ownWorkspace_).arrays(particles.size(), kinematics)),
       trial_(particles, materials) {
   loaded_ = carriesForces<Dim>(particles_);
@@ -376,7 +377,7 @@ void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jac
   }
   if (jacobian) {
     IMPM_TIMER("Jacobian");
-    if (layout_->coupling == NodeCoupling::self && !hasDiagonalJacobian())
+    if (layout_.coupling == NodeCoupling::self && !hasDiagonalJacobian())
       throw std::logic_error("a Jacobian with node couplings asked of a diagonal graph");
     auto xHost = xo->getLocalViewHost(Tpetra::Access::ReadOnly);
     auto& J = dynamic_cast<FECrsMatrix&>(*jacobian);

@@ -70,8 +70,8 @@ class GridSystem : public ResidualModel {
   // be solved (the lumped one is lumpedMass()).
   Teuchos::RCP<CrsMatrix> consistentMassMatrix() const;
   // 1 on nodal unknowns, 0 on extra unknowns.
-  const Vector& nodalMask() const { return *layout_->nodalMask; }
-  const std::vector<LO>& extraRows() const { return layout_->extraRows; }
+  const Vector& nodalMask() const { return *layout_.nodalMask; }
+  const std::vector<LO>& extraRows() const { return layout_.extraRows; }
 
   Teuchos::RCP<const Map> unknownMap() const override { return dofs_.ownedMap(); }
   // Explicit steps, and linear materials whose step is linear in du (1-D, or total
@@ -177,7 +177,8 @@ class GridSystem : public ResidualModel {
   double time_, loadFactor_;
   ParticleGridMap<Dim> particleGridMap_;
   LayoutCache<Dim> ownLayouts_{false};
-  std::shared_ptr<const SystemLayout<Dim>> layout_;
+  LaidOut<Dim> laidOut_;
+  const SystemLayout<Dim>& layout_;
   // The layout's parts, by the names the assembly below uses.
   const std::vector<int>& firstExtra_;
   const DofMap<Dim>& dofs_;

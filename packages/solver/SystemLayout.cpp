@@ -29,7 +29,6 @@ LayoutKey<Dim> keyOf(const NodeOwnership<Dim>& ownership, const ParticleGridMap<
   key.ownership = &ownership;
   key.ownershipRevision = ownership.revision();
   key.coupling = coupling;
-  auto rowPtr = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), map.rowPtr);
   auto node = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), map.node);
   key.touched.assign(node.data(), node.data() + node.extent(0));
   for (const auto& c : contributions) {
@@ -39,6 +38,7 @@ LayoutKey<Dim> keyOf(const NodeOwnership<Dim>& ownership, const ParticleGridMap<
   for (const auto& e : extras)
     key.extraNodes.push_back(e.anchorNode);
   if (coupling == NodeCoupling::shared) {
+    auto rowPtr = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), map.rowPtr);
     key.rowPtr.assign(rowPtr.data(), rowPtr.data() + rowPtr.extent(0));
     return key;
   }
@@ -149,8 +149,7 @@ void LayoutCache<Dim>::keep(LayoutKey<Dim> key, std::shared_ptr<const SystemLayo
 }
 
 template <int Dim>
-std::shared_ptr<const SystemLayout<Dim>> layoutOf(const LayoutInputs<Dim>& in,
-                                                  LayoutCache<Dim>& cache) {
+LaidOut<Dim> layoutOf(const LayoutInputs<Dim>& in, LayoutCache<Dim>& cache) {
   const Comm& comm = *in.ownership.comm();
   std::vector<int> firstExtra;
   std::vector<ExtraDof> extras;
@@ -161,28 +160,27 @@ std::shared_ptr<const SystemLayout<Dim>> layoutOf(const LayoutInputs<Dim>& in,
     fresh = numberUnknowns(in.ownership, in.map, firstExtra, key.touched, extras, in.coupling);
     cache.newUnknowns(*fresh->dofs.ownedMap());
   }
-  if (kept && in.coupling == NodeCoupling::self) {
-    // The same nodes, other entries: their overlap indices are new, the rest is kept.
-    fresh = std::make_shared<SystemLayout<Dim>>(*kept);
-    collectively(comm,
-                 [&] { fresh->entryDofs = impm::entryDofs(in.map, *fresh->dofs.overlapMap()); });
-  }
   const SystemLayout<Dim>& unknowns = fresh ? *fresh : *kept;
+  EntryDofs<> entries = unknowns.entryDofs;
+  if (kept && in.coupling == NodeCoupling::self)  // the same nodes, other entries
+    collectively(comm, [&] { entries = impm::entryDofs(in.map, *kept->dofs.overlapMap()); });
   // The contributions' couplings, read against these unknowns.
   std::vector<std::pair<GO, GO>> couplings;
   for (std::size_t c = 0; c < in.contributions.size(); ++c)
     in.contributions[c]->couplings(
-        ContributionContext<Dim>{in.ownership.grid(), in.particles, in.map, unknowns.entryDofs,
-                                 unknowns.dofs, in.time, in.loadFactor, unknowns.firstExtra[c]},
+        ContributionContext<Dim>{in.ownership.grid(), in.particles, in.map, entries, unknowns.dofs,
+                                 in.time, in.loadFactor, unknowns.firstExtra[c]},
         couplings);
   for (GO padding : unknowns.dofs.paddingDofs())  // its row holds its diagonal only
     couplings.emplace_back(padding, padding);
   if (kept && cache.sameCouplings(couplings, comm)) {
     cache.keep(std::move(key), kept);
-    return fresh ? fresh : kept;
+    return {kept, entries};
   }
-  if (!fresh)
+  if (!fresh) {
     fresh = std::make_shared<SystemLayout<Dim>>(*kept);
+    fresh->entryDofs = entries;
+  }
   fresh->couplings = std::move(couplings);
   {
     IMPM_TIMER("graph");
@@ -190,12 +188,12 @@ std::shared_ptr<const SystemLayout<Dim>> layoutOf(const LayoutInputs<Dim>& in,
         buildGraph(in.map, fresh->entryDofs, fresh->dofs, fresh->couplings, fresh->coupling);
   }
   cache.keep(std::move(key), fresh);
-  return fresh;
+  return {fresh, entries};
 }
 
 template class LayoutCache<1>;
 template class LayoutCache<2>;
-template std::shared_ptr<const SystemLayout<1>> layoutOf(const LayoutInputs<1>&, LayoutCache<1>&);
-template std::shared_ptr<const SystemLayout<2>> layoutOf(const LayoutInputs<2>&, LayoutCache<2>&);
+template LaidOut<1> layoutOf(const LayoutInputs<1>&, LayoutCache<1>&);
+template LaidOut<2> layoutOf(const LayoutInputs<2>&, LayoutCache<2>&);
 
 }  // namespace impm

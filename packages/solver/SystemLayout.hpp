@@ -39,7 +39,10 @@ struct SystemLayout {
   std::vector<int> firstExtra;  // each contribution's first extra unknown
   DofMap<Dim> dofs;
   NodeCoupling coupling;  // the graph's
-  EntryDofs<> entryDofs;  // overlap-map index of each map entry's node
+  // The overlap-map index of each entry's node, for the map the layout was built on: with
+  // shared coupling every map of the same key has these, with self coupling each map has its
+  // own (LaidOut).
+  EntryDofs<> entryDofs;
   Teuchos::RCP<const Import> importer;
   Teuchos::RCP<const Vector> nodalMask;      // 1 on nodal unknowns, 0 on extra unknowns
   std::vector<LO> extraRows;                 // the owned rows of extra unknowns
@@ -107,12 +110,19 @@ struct LayoutInputs {
   NodeCoupling coupling;
 };
 
+// A system's layout and the overlap index of each entry of its map (the layout's own,
+// except for a kept layout with self coupling, whose map has other entries).
+template <int Dim>
+struct LaidOut {
+  std::shared_ptr<const SystemLayout<Dim>> layout;
+  EntryDofs<> entryDofs;
+};
+
 // The layout of the system on `in.map`: the cache's when nothing it depends on changed,
 // otherwise a new one, which the cache keeps (a new graph only, when only the couplings
 // changed).  Calls every contribution's prepare().  Collective; NumericalError when a node
 // that a boundary condition reaches is reached by no integration point.
 template <int Dim>
-std::shared_ptr<const SystemLayout<Dim>> layoutOf(const LayoutInputs<Dim>& in,
-                                                  LayoutCache<Dim>& cache);
+LaidOut<Dim> layoutOf(const LayoutInputs<Dim>& in, LayoutCache<Dim>& cache);
 
 }  // namespace impm
