@@ -329,6 +329,8 @@ void DynamicStepper<Dim>::run(const StepCallback<Dim>& onStep) {
     this->setup_.applyLoads(settings_.isExplicit() ? t : t + h);
     // 1. The particle-grid map (a fixed grid keeps its own), the grid's v^n and a^n.
     auto system = systemAt(t + h);
+    if (stressCommitted_ && !fixedGrid_)  // a fixed grid's system keeps its own stress
+      system->startFromCommittedStress();
     if (fixedGrid_ && !u_)
       state.started ? restoreNodalState(*system) : startFixedGrid(*system);
     if (!fixedGrid_ || !mass_)  // a fixed grid's particles keep their masses and nodes
@@ -370,6 +372,7 @@ void DynamicStepper<Dim>::run(const StepCallback<Dim>& onStep) {
       v_ = vNew, a_ = aNew;
     }
     this->accept(record, StepGrid<Dim>{*system, *du, vNew, mass}, onStep);
+    stressCommitted_ = true;
   }
 }
 

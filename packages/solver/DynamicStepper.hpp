@@ -89,6 +89,9 @@ class DynamicStepper : public Stepper<Dim> {
   Teuchos::RCP<GridSystem<Dim>> fixedSystem_;
   Teuchos::RCP<Vector> u_, v_, a_;   // nodal state of a fixed grid
   Teuchos::RCP<const Vector> mass_;  // the step's lumped mass (a fixed grid's, kept)
+  // Whether the particles' stress is what a step of this run committed (not the initial or
+  // a restart's): a moving-grid explicit step then starts from it.
+  bool stressCommitted_ = false;
 };
 
 }  // namespace impm

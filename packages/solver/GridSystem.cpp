@@ -364,6 +364,12 @@ void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jac
   if (!frozen_) {
     xo = updateStress(x);
   } else {
+    if (!atStepStart_ && committedStart_) {
+      const auto rows = Kokkos::make_pair(std::size_t(0), particles_.size());
+      Kokkos::deep_copy(work_.Pn,
+                        Kokkos::subview(particles_.stress, rows, Kokkos::ALL(), Kokkos::ALL()));
+      atStepStart_ = true;
+    }
     if (!atStepStart_) {
       updateStress(Vector(unknownMap()));  // the stress at the start of the step, du = 0
       atStepStart_ = true;
@@ -521,12 +527,20 @@ void GridSystem<Dim>::commit(const Vector& x) {
 
 template <int Dim>
 bool GridSystem<Dim>::startStressKept() const {
-  if (kinematics_ != Kinematics::totalLagrangian)
-    return false;
+  return kinematics_ == Kinematics::totalLagrangian && !hasTrialState();
+}
+
+template <int Dim>
+void GridSystem<Dim>::startFromCommittedStress() {
+  committedStart_ = kinematics_ == Kinematics::updatedLagrangian && !hasTrialState();
+}
+
+template <int Dim>
+bool GridSystem<Dim>::hasTrialState() const {
   for (std::size_t m = 0; m < materials_.size(); ++m)
     if (!trial_.of(static_cast<int>(m)).empty())
-      return false;
-  return true;
+      return true;
+  return false;
 }
 
 template class GridSystem<1>;

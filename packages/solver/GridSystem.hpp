@@ -52,6 +52,13 @@ class GridSystem : public ResidualModel {
   // Explicit steps: the internal force is that of the start of the step whatever du is,
   // and contributes nothing to the Jacobian.
   void freezeInternalForce(bool frozen) { frozen_ = frozen; }
+  // The particles' stress is the Cauchy stress their last update committed (the stepper
+  // knows it): a frozen internal force in updated-Lagrangian kinematics then takes it as the
+  // stress at the start of the step instead of evaluating the laws at du = 0.  With laws
+  // without a trial state that evaluation gives the same bits (P at the same F_n, pushed
+  // forward by the same operations as the update's Cauchy stress); with others the laws
+  // are evaluated as before.
+  void startFromCommittedStress();
   // The time at the end of the step and the load factor (a system built at reference
   // positions serves every step of a total-Lagrangian run).  Like the constructor, it reads
   // whether the particles carry forces: the loads of the step are applied before.
@@ -139,6 +146,8 @@ class GridSystem : public ResidualModel {
   // step start is P itself) and no law with a trial state (re-evaluating a return map from
   // its committed state could differ by round-off).
   bool startStressKept() const;
+  // Whether a material has a trial state (a return map, say).
+  bool hasTrialState() const;
   // c0 du - r on the overlap map in dynamic steps with the consistent mass (the
   // acceleration), null otherwise.
   Teuchos::RCP<Vector> acceleration(const Vector& xOverlap) const;
@@ -193,6 +202,7 @@ class GridSystem : public ResidualModel {
   // Whether work_ holds the stress at the step start (du = 0, what a frozen internal force
   // uses): evaluated there, or the particle update's committed by commit().
   bool atStepStart_ = false;
+  bool committedStart_ = false;  // startFromCommittedStress()
   // The x of the stress in work_ (null: none, or the materials have committed since), and
   // on the overlap map.
   Teuchos::RCP<const Vector> stressX_, stressXOverlap_;
