@@ -73,16 +73,25 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
       work_((workspace ? *workspace : ownWorkspace_).arrays(particles.size(), kinematics)),
       trial_(particles, materials) {
   loaded_ = carriesForces<Dim>(particles_);
+}
+
+template <int Dim>
+double GridSystem<Dim>::constraintScale() const {
   // Prescribed rows get the size of a stiffness diagonal (modulus h^(Dim-2)), so that they
-  // neither dominate nor vanish in the preconditioner.
-  double modulus = 0.0;
-  for (std::size_t m = 0; m < materials_.size(); ++m)
-    modulus = std::max(modulus,
-                       maxModulus(particles_, materials_, static_cast<int>(m), *ownership.comm()));
-  double h = grid_.spacing[0];
-  for (int d = 1; d < Dim; ++d)
-    h = std::min(h, grid_.spacing[d]);
-  constraintScale_ = (modulus > 0 ? modulus : 1.0) * std::pow(h, Dim - 2);
+  // neither dominate nor vanish in the preconditioner.  Made on first use: the laws'
+  // modulus is a pass over the particles that systems without prescribed unknowns (every
+  // step of an explicit bar with Robin ends) do not need.
+  if (!constraintScale_) {
+    double modulus = 0.0;
+    for (std::size_t m = 0; m < materials_.size(); ++m)
+      modulus = std::max(modulus, maxModulus(particles_, materials_, static_cast<int>(m),
+                                             *dofs_.ownedMap()->getComm()));
+    double h = grid_.spacing[0];
+    for (int d = 1; d < Dim; ++d)
+      h = std::min(h, grid_.spacing[d]);
+    constraintScale_ = (modulus > 0 ? modulus : 1.0) * std::pow(h, Dim - 2);
+  }
+  return *constraintScale_;
 }
 
 template <int Dim>
@@ -111,11 +120,16 @@ template <int Dim>
 void GridSystem<Dim>::applyConstraints(const Vector& x, Vector* residual,
                                        CrsMatrix* jacobian) const {
   const auto rows = constrainedRows();
+  int mine = rows.empty() ? 0 : 1, any = 0;
+  Teuchos::reduceAll(*dofs_.ownedMap()->getComm(), Teuchos::REDUCE_MAX, mine, Teuchos::outArg(any));
+  if (!any)
+    return;  // no prescribed unknown on any rank
+  const double scale = constraintScale();
   if (residual) {
     auto r = residual->getLocalViewHost(Tpetra::Access::ReadWrite);
     auto xv = x.getLocalViewHost(Tpetra::Access::ReadOnly);
     for (const auto& [lid, value] : rows)
-      r(lid, 0) = constraintScale_ * (xv(lid, 0) - value);
+      r(lid, 0) = scale * (xv(lid, 0) - value);
   }
   if (jacobian)
     eliminateConstrained(rows, *jacobian);
@@ -137,7 +151,7 @@ void GridSystem<Dim>::eliminateConstrained(const std::vector<std::pair<LO, doubl
   const auto rowMap = J.getRowMap()->getLocalMap(), colMap = J.getColMap()->getLocalMap();
   const auto fixedRow = marks.getLocalViewDevice(Tpetra::Access::ReadOnly);
   const auto fixedCol = atColumns.getLocalViewDevice(Tpetra::Access::ReadOnly);
-  const double scale = constraintScale_;
+  const double scale = constraintScale();
   Kokkos::parallel_for(
       "impm::eliminateConstrained", RangePolicy<DefaultExecSpace>(0, K.numRows()),
       KOKKOS_LAMBDA(const LO r) {

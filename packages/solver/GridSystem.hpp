@@ -10,6 +10,7 @@
 // here until commit().
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -206,7 +207,9 @@ class GridSystem : public ResidualModel {
   // The x of the stress in work_ (null: none, or the materials have committed since), and
   // on the overlap map.
   Teuchos::RCP<const Vector> stressX_, stressXOverlap_;
-  double constraintScale_ = 1.0;
+  // The diagonal of a prescribed row, made on first use (constraintScale()).  Collective.
+  double constraintScale() const;
+  mutable std::optional<double> constraintScale_;
   StepWorkspace<Dim> ownWorkspace_;
   typename StepWorkspace<Dim>::Arrays work_;  // trial F, P, A; P, A relative to the step start
   TrialState<Dim> trial_;                     // the materials' trial state
