@@ -121,6 +121,8 @@ std::size_t migrateParticles(ParticleSet<Dim>& particles, const std::vector<int>
 template <int Dim>
 std::size_t migrateToOwners(ParticleSet<Dim>& particles, const Decomposition<Dim>& decomposition,
                             const Comm& comm) {
+  if (comm.getSize() == 1)
+    return 0;  // one rank owns every cell: nothing to look up (a pass over the particles)
   auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.x);
   std::vector<int> destination(particles.size());
   for (std::size_t p = 0; p < particles.size(); ++p) {
