@@ -167,8 +167,8 @@ class GridSystem : public ResidualModel {
   // prescribed unknowns are then zero, and so are the products with their columns.
   // Collective.
   void eliminateConstrained(const std::vector<std::pair<LO, double>>& rows, CrsMatrix& J) const;
-  // NumericalError naming the first particle whose trial stress or tangent is NaN or
-  // infinite (local).
+  // NumericalError naming the first particle whose trial stress or tangent (where a
+  // Jacobian will use it) is NaN or infinite (local).
   void requireFiniteStress() const;
   // NumericalError on every rank naming the first unknown at which the vector, or a row in
   // which the matrix, holds NaN or inf.  Collective.

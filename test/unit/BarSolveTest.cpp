@@ -14,6 +14,7 @@
 
 #include "bc/DirichletNodes.hpp"
 #include "bc/RobinEnd.hpp"
+#include "core/Errors.hpp"
 #include "core/Parameters.hpp"
 #include "material/MaterialFactory.hpp"
 #include "material/MaterialState.hpp"
@@ -240,6 +241,63 @@ TEST(GridSystem, JacobianIsTheDerivativeOfTheResidualIn2D) {
         // central difference's truncation and round-off bound it near 1e-10.
         EXPECT_LT(jacobianError(system, 0.003), 1e-9) << what;
       }
+}
+
+// A law whose stress is finite and whose tangent is not.
+class NanTangentLaw : public Material<2> {
+ public:
+  NanTangentLaw() : Material<2>("nan tangent", 1.0) {}
+  void firstPiola(const Evaluation& at, Tensors& P, Tangents& A) const override {
+    const auto members = at.members;
+    const auto F = at.F;
+    Kokkos::parallel_for("nanTangent", RangePolicy<DefaultExecSpace>(0, members.extent(0)),
+                         [=](const int i) {
+                           const int p = members(i);
+                           for (int a = 0; a < 2; ++a)
+                             for (int b = 0; b < 2; ++b) {
+                               P(p, a, b) = F(p, a, b) - (a == b ? 1.0 : 0.0);
+                               for (int c = 0; c < 2; ++c)
+                                 for (int d = 0; d < 2; ++d)
+                                   A(p, a, b, c, d) = std::numeric_limits<double>::quiet_NaN();
+                             }
+                         });
+  }
+  void energyDensity(const Evaluation& at, Scalars& W) const override {
+    const auto members = at.members;
+    Kokkos::parallel_for("nanTangentEnergy", RangePolicy<DefaultExecSpace>(0, members.extent(0)),
+                         [=](const int i) { W(members(i)) = 0.0; });
+  }
+  double maxModulus(const Evaluation&) const override { return 1.0; }
+};
+
+// A tangent that is not finite stops a step whose Jacobian would use it, naming it; an
+// explicit step's frozen internal force assembles none, so it does not look.
+TEST(GridSystem, NonFiniteTangentStopsOnlyStepsThatAssembleIt) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  NodeOwnership<2> own(makeGridGeometry<2>({0.0, 0.0}, {1.0, 1.0}, {5, 5}), comm);
+  const std::vector<std::shared_ptr<Contribution<2>>> none;
+  auto ps = deformedBlock(own, Method::gimp);
+  Materials<2> materials = {std::make_shared<NanTangentLaw>()};
+  declareMaterialVariables(ps, materials), initializeMaterials(ps, materials, true);
+  for (bool frozen : {false, true}) {
+    GridSystem<2> system(own, Method::gimp, Kinematics::updatedLagrangian, ps, materials, none, 1.0,
+                         1.0);
+    system.freezeInternalForce(frozen);
+    Vector r(system.unknownMap());
+    const auto evaluate = [&] { system.evaluate(Vector(system.unknownMap()), &r, nullptr); };
+    if (!frozen) {
+      try {
+        evaluate();
+        ADD_FAILURE() << "a non-finite tangent went unnoticed";
+      } catch (const NumericalError& e) {
+        EXPECT_NE(std::string(e.what()).find("the tangent of particle"), std::string::npos)
+            << e.what();
+      }
+    } else {
+      EXPECT_NO_THROW(evaluate());
+      EXPECT_GT(r.normInf(), 0.0);  // the stress it holds makes a force
+    }
+  }
 }
 
 // An explicit step on a moving grid starts from the Cauchy stress the last particle update
