@@ -218,6 +218,17 @@ ParticleSet<2> deformedBlock(const NodeOwnership<2>& own, Method method) {
   return ps;
 }
 
+// The 2-D law `law` (E = 100, nu = 0.3) on every particle of ps, its variables declared
+// and initialized.
+Materials<2> elasticOn(ParticleSet<2>& ps, const std::string& law) {
+  Teuchos::ParameterList mat;
+  mat.set("Model", law), mat.set("E", 100.0), mat.set("nu", 0.3);
+  validateParameters(mat, materialValidParameters());
+  Materials<2> materials = {createMaterial<2>("m", mat)};
+  declareMaterialVariables(ps, materials), initializeMaterials(ps, materials, true);
+  return materials;
+}
+
 TEST(GridSystem, JacobianIsTheDerivativeOfTheResidualIn2D) {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   NodeOwnership<2> own(makeGridGeometry<2>({0.0, 0.0}, {1.0, 1.0}, {5, 5}), comm);
@@ -227,11 +238,7 @@ TEST(GridSystem, JacobianIsTheDerivativeOfTheResidualIn2D) {
         if (method == Method::fem && kinematics == Kinematics::updatedLagrangian)
           continue;  // fem integrates on the grid as a fixed mesh
         auto ps = deformedBlock(own, method);
-        Teuchos::ParameterList mat;
-        mat.set("Model", law), mat.set("E", 100.0), mat.set("nu", 0.3);
-        validateParameters(mat, materialValidParameters());
-        Materials<2> materials = {createMaterial<2>("m", mat)};
-        declareMaterialVariables(ps, materials), initializeMaterials(ps, materials, true);
+        const auto materials = elasticOn(ps, law);
         const std::vector<std::shared_ptr<Contribution<2>>> none;
         GridSystem<2> system(own, method, kinematics, ps, materials, none, 1.0, 1.0);
         const std::string what =
@@ -311,11 +318,7 @@ TEST(GridSystem, ExplicitStepStartsFromTheCommittedStress) {
     for (Method method : {Method::gimp, Method::cpdi}) {
       const std::string what = law + ", " + methodName(method);
       auto ps = deformedBlock(own, method);
-      Teuchos::ParameterList mat;
-      mat.set("Model", law), mat.set("E", 100.0), mat.set("nu", 0.3);
-      validateParameters(mat, materialValidParameters());
-      Materials<2> materials = {createMaterial<2>("m", mat)};
-      declareMaterialVariables(ps, materials), initializeMaterials(ps, materials, true);
+      const auto materials = elasticOn(ps, law);
       {  // a step: the particles move and commit a new stress
         GridSystem<2> step(own, method, Kinematics::updatedLagrangian, ps, materials, none, 1.0,
                            1.0);
@@ -366,12 +369,8 @@ TEST(GridSystem, PrescribedUnknownsKeepTheJacobianSymmetric) {
       const auto kinematics =
           method == Method::fem ? Kinematics::totalLagrangian : Kinematics::updatedLagrangian;
       auto ps = deformedBlock(own, method);
-      Teuchos::ParameterList mat;
-      mat.set("Model", law), mat.set("E", 100.0), mat.set("nu", 0.3);
-      validateParameters(mat, materialValidParameters());
-      Materials<2> materials = {createMaterial<2>("m", mat)};
+      const auto materials = elasticOn(ps, law);
       ASSERT_TRUE(materials[0]->hasSymmetricTangent()) << law;
-      declareMaterialVariables(ps, materials), initializeMaterials(ps, materials, true);
       GridSystem<2> system(own, method, kinematics, ps, materials, held, 1.0, 1.0);
       Vector x(system.unknownMap()), v(system.unknownMap()), w(system.unknownMap());
       Vector Jv(system.unknownMap()), Jw(system.unknownMap());

@@ -358,27 +358,27 @@ TEST(LinearSolver, BandedLuOverTheIlutDefault) {
   EXPECT_TRUE(kept.isParameter("fact: drop tolerance"));
 }
 
+// The MueLu list of the 2-D symmetric default on `ranks` ranks, merged with a deck's list
+// that sets MueLu's `key` to `value`.
+template <class T>
+Teuchos::ParameterList mergedMueLu(int ranks, const std::string& key, const T& value) {
+  Teuchos::ParameterList deck;
+  deck.sublist("Preconditioner Types").sublist("MueLu").set(key, value);
+  return mergedLinearSolverParameters(deck, OperatorKind::symmetricStiffness, 2, ranks)
+      .sublist("Preconditioner Types")
+      .sublist("MueLu");
+}
+
 // The default's smoother is a forward sweep before and a backward one after; a deck that
 // names any smoother parameter replaces it whole (MueLu takes `smoother: pre type` over
 // `smoother: type`), one that names other MueLu parameters keeps it.
 TEST(LinearSolver, DeckSmootherReplacesTheDefaultOne) {
-  const auto muelu = [](const Teuchos::ParameterList& deck) {
-    return mergedLinearSolverParameters(deck, OperatorKind::symmetricStiffness, 2, 1)
-        .sublist("Preconditioner Types")
-        .sublist("MueLu");
-  };
-  Teuchos::ParameterList coarse;
-  coarse.sublist("Preconditioner Types").sublist("MueLu").set("coarse: max size", 500);
-  const auto kept = muelu(coarse);
+  const auto kept = mergedMueLu(1, "coarse: max size", 500);
   EXPECT_EQ(kept.get<int>("coarse: max size"), 500);
   EXPECT_EQ(kept.sublist("smoother: pre params").get<std::string>("relaxation: type"),
             "Gauss-Seidel");
   EXPECT_TRUE(kept.sublist("smoother: post params").get<bool>("relaxation: backward mode"));
-  Teuchos::ParameterList chebyshev;
-  chebyshev.sublist("Preconditioner Types")
-      .sublist("MueLu")
-      .set("smoother: type", std::string("CHEBYSHEV"));
-  const auto replaced = muelu(chebyshev);
+  const auto replaced = mergedMueLu(1, "smoother: type", std::string("CHEBYSHEV"));
   EXPECT_EQ(replaced.get<std::string>("smoother: type"), "CHEBYSHEV");
   for (const char* key : {"smoother: pre type", "smoother: pre params", "smoother: post type",
                           "smoother: post params"})
@@ -390,19 +390,10 @@ TEST(LinearSolver, DeckSmootherReplacesTheDefaultOne) {
 // another coarse type drops their parameters (Amesos2's solvers reject them, Ifpack2's
 // ignore them), one that only tunes the coarse level keeps them.
 TEST(LinearSolver, DeckCoarseTypeReplacesTheDefaultCoarseParameters) {
-  const auto muelu = [](const Teuchos::ParameterList& deck) {
-    return mergedLinearSolverParameters(deck, OperatorKind::symmetricStiffness, 2, 2)
-        .sublist("Preconditioner Types")
-        .sublist("MueLu");
-  };
-  Teuchos::ParameterList size;
-  size.sublist("Preconditioner Types").sublist("MueLu").set("coarse: max size", 500);
-  const auto kept = muelu(size);
+  const auto kept = mergedMueLu(2, "coarse: max size", 500);
   EXPECT_EQ(kept.get<std::string>("coarse: type"), "RELAXATION");
   EXPECT_EQ(kept.sublist("coarse: params").get<int>("relaxation: sweeps"), 30);
-  Teuchos::ParameterList ilut;
-  ilut.sublist("Preconditioner Types").sublist("MueLu").set("coarse: type", std::string("ILUT"));
-  const auto replaced = muelu(ilut);
+  const auto replaced = mergedMueLu(2, "coarse: type", std::string("ILUT"));
   EXPECT_EQ(replaced.get<std::string>("coarse: type"), "ILUT");
   EXPECT_FALSE(replaced.isParameter("coarse: params"));
   EXPECT_EQ(replaced.get<double>("aggregation: drop tol"), 0.05);  // the rest stays
