@@ -112,20 +112,42 @@ std::vector<ParticleTable> gatherParticles(const ParticleSet<Dim>& ps,
                                            const std::vector<TableRows>& rows) {
   const auto host = ps.mirror(Kokkos::DefaultHostExecutionSpace());
   const std::size_t n = ps.size();
+  // Copies each column's values to out(c), particle p's to out(c)[place(p)].
+  const auto fill = [&](const auto& out, const auto& place) {
+    host.forEachField([&](const FieldSpec& spec, const auto& view) {
+      for (std::size_t c = 0; c < columns.size(); ++c) {
+        if (columns[c].field != spec.name)
+          continue;
+        auto data = out(c);
+        for (std::size_t p = 0; p < n; ++p)
+          data[place(p)] = fieldComponent(view, p, columns[c].component);
+      }
+    });
+  };
+  std::vector<ParticleTable> tables;
+  if (comm->getSize() == 1) {
+    // Every row is here, and both layouts are the rows in id order: each value goes to its
+    // place in the table at once, without the maps, the import and two copies of the table.
+    ParticleTable table;
+    for (const auto& c : columns)
+      table.names.push_back(c.csv);
+    table.columns.assign(columns.size(), std::vector<double>(n));
+    for (std::size_t p = 0; p < n; ++p)
+      if (host.id(p) < 0 || static_cast<GlobalId>(host.id(p)) >= totalParticles)
+        throw std::logic_error("gatherParticles: particle id " + std::to_string(host.id(p)) +
+                               " outside [0, " + std::to_string(totalParticles) + ")");
+    fill([&](std::size_t c) { return table.columns[c].data(); },
+         [&](std::size_t p) { return static_cast<std::size_t>(host.id(p)); });
+    for (std::size_t k = 1; k < rows.size(); ++k)
+      tables.push_back(table);
+    tables.push_back(std::move(table));
+    return tables;
+  }
   std::vector<GO> gids(host.id.data(), host.id.data() + n);
   auto source = Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(totalParticles),
                                      Teuchos::ArrayView<const GO>(gids), 0, comm));
   MultiVector local(source, std::max<std::size_t>(columns.size(), 1));
-  host.forEachField([&](const FieldSpec& spec, const auto& view) {
-    for (std::size_t c = 0; c < columns.size(); ++c) {
-      if (columns[c].field != spec.name)
-        continue;
-      auto data = local.getDataNonConst(c);
-      for (std::size_t p = 0; p < n; ++p)
-        data[p] = fieldComponent(view, p, columns[c].component);
-    }
-  });
-  std::vector<ParticleTable> tables;
+  fill([&](std::size_t c) { return local.getDataNonConst(c); }, [](std::size_t p) { return p; });
   for (const TableRows where : rows) {
     const Teuchos::RCP<const Map> target =
         where == TableRows::onRoot

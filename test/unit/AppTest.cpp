@@ -155,8 +155,12 @@ TEST(Output, ParticlesAreGatheredSortedById) {
   Bodies<1> bodies(deck, {"steel"}, own.grid());
   std::vector<std::shared_ptr<Material<1>>> mats = {
       createMaterial<1>("steel", deck.sublist("Materials").sublist("steel"))};
-  const auto ps =
-      bodies.createParticles(Method::cpdi, own.decomposition(), comm->getRank(), mats, true);
+  auto ps = bodies.createParticles(Method::cpdi, own.decomposition(), comm->getRank(), mats, true);
+  // Stored out of id order (reversed): the table sorts them, on one rank as on several.
+  for (std::size_t p = 0, q = ps.size(); p + 1 < q; ++p, --q) {
+    std::swap(ps.id(p), ps.id(q - 1));
+    std::swap(ps.X(p, 0), ps.X(q - 1, 0));
+  }
   const auto table = gatherParticles(ps, comm, 20);
   // In blocks: consecutive ids on every rank, the blocks in rank order and covering 0..19.
   const auto block = gatherParticles(ps, comm, 20, TableRows::inBlocks);
