@@ -372,6 +372,20 @@ void GridSystem<Dim>::addLumpedInertia(const Vector& xOverlap, Vector& residual)
 }
 
 template <int Dim>
+void GridSystem<Dim>::stressAtStepStart() {
+  if (atStepStart_)
+    return;
+  if (committedStart_) {  // the particles' committed Cauchy stress is the laws' at du = 0
+    const auto rows = Kokkos::make_pair(std::size_t(0), particles_.size());
+    Kokkos::deep_copy(work_.Pn,
+                      Kokkos::subview(particles_.stress, rows, Kokkos::ALL(), Kokkos::ALL()));
+  } else {
+    updateStress(Vector(unknownMap()));  // the laws evaluated at du = 0
+  }
+  atStepStart_ = true;
+}
+
+template <int Dim>
 void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jacobian) {
   // NaN or inf stops the step here, named, before a Krylov solver or an output meets it.
   requireFinite(x, "the Newton iterate (the last linear solve's result)");
@@ -379,16 +393,7 @@ void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jac
   if (!frozen_) {
     xo = updateStress(x);
   } else {
-    if (!atStepStart_ && committedStart_) {
-      const auto rows = Kokkos::make_pair(std::size_t(0), particles_.size());
-      Kokkos::deep_copy(work_.Pn,
-                        Kokkos::subview(particles_.stress, rows, Kokkos::ALL(), Kokkos::ALL()));
-      atStepStart_ = true;
-    }
-    if (!atStepStart_) {
-      updateStress(Vector(unknownMap()));  // the stress at the start of the step, du = 0
-      atStepStart_ = true;
-    }
+    stressAtStepStart();
     xo = toOverlap(x);
   }
   if (residual) {

@@ -157,6 +157,11 @@ class GridSystem : public ResidualModel {
   // f_int - f_ext (+ M a) + the contributions' terms at x (given on the overlap map),
   // without the constrained rows.
   void assembleResidual(const Vector& xOverlap, Vector& residual) const;
+  // The stress a frozen internal force uses, at the step start, into work_ once: the
+  // particles' committed stress (startFromCommittedStress()) or the laws' at du = 0.
+  void stressAtStepStart();
+  // The diagonal of a prescribed row, made on first use.  Collective.
+  double constraintScale() const;
   // Owned local index and prescribed increment of every constrained unknown.
   std::vector<std::pair<LO, double>> constrainedRows() const;
   // Rows of prescribed unknowns: residual scale (x_i - value), Jacobian row scale e_i.
@@ -207,9 +212,7 @@ class GridSystem : public ResidualModel {
   // The x of the stress in work_ (null: none, or the materials have committed since), and
   // on the overlap map.
   Teuchos::RCP<const Vector> stressX_, stressXOverlap_;
-  // The diagonal of a prescribed row, made on first use (constraintScale()).  Collective.
-  double constraintScale() const;
-  mutable std::optional<double> constraintScale_;
+  mutable std::optional<double> constraintScale_;  // constraintScale()
   StepWorkspace<Dim> ownWorkspace_;
   typename StepWorkspace<Dim>::Arrays work_;  // trial F, P, A; P, A relative to the step start
   TrialState<Dim> trial_;                     // the materials' trial state
