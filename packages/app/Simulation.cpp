@@ -362,6 +362,8 @@ double Simulation<Dim>::progressFraction(double time, double loadFactor) const {
 
 template <int Dim>
 std::unique_ptr<Output<Dim>> Simulation<Dim>::startOutput(const History<Dim>& history) {
+  // The files' creation and the initial state are output time, as the steps' writes are.
+  IMPM_TIMER("output");
   using Domains = typename Output<Dim>::Domains;
   const Domains domains = particles_.has(kCornersField) ? Domains::corners
                           : method_ == Method::cpdi     ? Domains::parallelogram
