@@ -117,12 +117,21 @@ std::vector<std::pair<LO, double>> GridSystem<Dim>::constrainedRows() const {
 }
 
 template <int Dim>
+bool GridSystem<Dim>::anyConstrained(bool mine) const {
+  if (!anyConstrained_) {
+    int any = 0;
+    Teuchos::reduceAll(*dofs_.ownedMap()->getComm(), Teuchos::REDUCE_MAX, mine ? 1 : 0,
+                       Teuchos::outArg(any));
+    anyConstrained_ = any == 1;
+  }
+  return *anyConstrained_;
+}
+
+template <int Dim>
 void GridSystem<Dim>::applyConstraints(const Vector& x, Vector* residual,
                                        CrsMatrix* jacobian) const {
   const auto rows = constrainedRows();
-  int mine = rows.empty() ? 0 : 1, any = 0;
-  Teuchos::reduceAll(*dofs_.ownedMap()->getComm(), Teuchos::REDUCE_MAX, mine, Teuchos::outArg(any));
-  if (!any)
+  if (!anyConstrained(!rows.empty()))
     return;  // no prescribed unknown on any rank
   const double scale = constraintScale();
   if (residual) {

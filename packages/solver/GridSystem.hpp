@@ -164,6 +164,11 @@ class GridSystem : public ResidualModel {
   double constraintScale() const;
   // Owned local index and prescribed increment of every constrained unknown.
   std::vector<std::pair<LO, double>> constrainedRows() const;
+  // Whether a rank has a prescribed unknown, given whether this one has (`mine`).  Asked
+  // once: the prescribed unknowns (the contributions' constrained nodes and the padding, see
+  // constrainedRows) are the layout's, fixed while the system lives; their increments are
+  // not.  Collective the first time.
+  bool anyConstrained(bool mine) const;
   // Rows of prescribed unknowns: residual scale (x_i - value), Jacobian row scale e_i.
   void applyConstraints(const Vector& x, Vector* residual, CrsMatrix* jacobian) const;
   // The rows of prescribed unknowns become scale e_i and their columns are zeroed elsewhere,
@@ -213,6 +218,7 @@ class GridSystem : public ResidualModel {
   // on the overlap map.
   Teuchos::RCP<const Vector> stressX_, stressXOverlap_;
   mutable std::optional<double> constraintScale_;  // constraintScale()
+  mutable std::optional<bool> anyConstrained_;     // anyConstrained()
   StepWorkspace<Dim> ownWorkspace_;
   typename StepWorkspace<Dim>::Arrays work_;  // trial F, P, A; P, A relative to the step start
   TrialState<Dim> trial_;                     // the materials' trial state
