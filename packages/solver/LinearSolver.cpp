@@ -183,7 +183,7 @@ Teuchos::ParameterList mergedLinearSolverParameters(const Teuchos::ParameterList
   // deck's `smoother: type`); and a deck that names its coarse solver drops the default's
   // coarse parameters, which belong to the default's coarse type (Gauss-Seidel sweeps mean
   // nothing to a direct solver, which rejects them).
-  if (namesMueLu(p, "")) {  // a default with MueLu
+  if (p.get<std::string>("Preconditioner Type") == "MueLu") {  // the default chose MueLu
     auto& muelu = p.sublist("Preconditioner Types").sublist("MueLu");
     if (namesMueLu(deck, "smoother:"))
       for (const char* key : {"smoother: pre type", "smoother: pre params", "smoother: post type",
