@@ -105,11 +105,9 @@ std::vector<TableColumn> unionOf(const std::vector<TableColumn>& all,
 }  // namespace
 
 template <int Dim>
-std::vector<ParticleTable> gatherParticles(const ParticleSet<Dim>& ps,
-                                           const Teuchos::RCP<const Comm>& comm,
-                                           GlobalId totalParticles,
-                                           const std::vector<TableColumn>& columns,
-                                           const std::vector<TableRows>& rows) {
+ParticleTable gatherParticles(const ParticleSet<Dim>& ps, const Teuchos::RCP<const Comm>& comm,
+                              GlobalId totalParticles, const std::vector<TableColumn>& columns,
+                              TableRows rows) {
   const auto host = ps.mirror(Kokkos::DefaultHostExecutionSpace());
   const std::size_t n = ps.size();
   // Copies each column's values to out(c), particle p's to out(c)[place(p)].
@@ -124,13 +122,12 @@ std::vector<ParticleTable> gatherParticles(const ParticleSet<Dim>& ps,
       }
     });
   };
-  std::vector<ParticleTable> tables;
+  ParticleTable table;
+  for (const auto& c : columns)
+    table.names.push_back(c.csv);
   if (comm->getSize() == 1) {
     // Every row is here, and both layouts are the rows in id order: each value goes to its
     // place in the table at once, without the maps, the import and two copies of the table.
-    ParticleTable table;
-    for (const auto& c : columns)
-      table.names.push_back(c.csv);
     table.columns.assign(columns.size(), std::vector<double>(n));
     for (std::size_t p = 0; p < n; ++p)
       if (host.id(p) < 0 || static_cast<GlobalId>(host.id(p)) >= totalParticles)
@@ -138,38 +135,27 @@ std::vector<ParticleTable> gatherParticles(const ParticleSet<Dim>& ps,
                                " outside [0, " + std::to_string(totalParticles) + ")");
     fill([&](std::size_t c) { return table.columns[c].data(); },
          [&](std::size_t p) { return static_cast<std::size_t>(host.id(p)); });
-    for (std::size_t k = 1; k < rows.size(); ++k)
-      tables.push_back(table);
-    tables.push_back(std::move(table));
-    return tables;
+    return table;
   }
   std::vector<GO> gids(host.id.data(), host.id.data() + n);
   auto source = Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(totalParticles),
                                      Teuchos::ArrayView<const GO>(gids), 0, comm));
   MultiVector local(source, std::max<std::size_t>(columns.size(), 1));
   fill([&](std::size_t c) { return local.getDataNonConst(c); }, [](std::size_t p) { return p; });
-  for (const TableRows where : rows) {
-    const Teuchos::RCP<const Map> target =
-        where == TableRows::onRoot
-            ? rootMap(totalParticles, comm)
-            : Teuchos::rcp<const Map>(
-                  new Map(static_cast<Tpetra::global_size_t>(totalParticles), 0, comm));
-    MultiVector gathered(target, local.getNumVectors());
-    gathered.doImport(local, Import(source, target), Tpetra::INSERT);
-    ParticleTable table;
-    for (const auto& c : columns)
-      table.names.push_back(c.csv);
-    table.columns = columnsOf(gathered, columns.size());
-    tables.push_back(std::move(table));
-  }
-  return tables;
+  const Teuchos::RCP<const Map> target =
+      rows == TableRows::onRoot ? rootMap(totalParticles, comm)
+                                : Teuchos::rcp<const Map>(new Map(
+                                      static_cast<Tpetra::global_size_t>(totalParticles), 0, comm));
+  MultiVector gathered(target, local.getNumVectors());
+  gathered.doImport(local, Import(source, target), Tpetra::INSERT);
+  table.columns = columnsOf(gathered, columns.size());
+  return table;
 }
 
 template <int Dim>
 ParticleTable gatherParticles(const ParticleSet<Dim>& ps, const Teuchos::RCP<const Comm>& comm,
                               GlobalId totalParticles, TableRows rows) {
-  return gatherParticles(ps, comm, totalParticles, outputColumns(ps), std::vector<TableRows>{rows})
-      .front();
+  return gatherParticles(ps, comm, totalParticles, outputColumns(ps), rows);
 }
 
 template <int Dim>
@@ -207,8 +193,7 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
   gathered_ = unionOf(all, {csvColumns_, exodusColumns_, geometry});
   // The particles are needed here only for the Exodus meshes.
   const auto table = exodus_ ? gatherParticles(particles, ownership.comm(), totalParticles,
-                                               gathered_, {TableRows::onRoot})
-                                   .front()
+                                               gathered_, TableRows::onRoot)
                              : ParticleTable();
   if (!root_)
     return;
@@ -388,31 +373,27 @@ void Output<Dim>::writeFields(double time, const ParticleSet<Dim>& particles,
   if (!writesFields())
     return;
   const auto& comm = ownership_.comm();
-  // The CSV in blocks of ids on every rank, the Exodus fields on rank 0: one read of the
-  // particles for both, and on one rank one table (its only block is all the rows).
-  std::vector<TableRows> wanted;
-  if (csv_)
-    wanted.push_back(TableRows::inBlocks);
-  if (exodus_ && !(csv_ && comm->getSize() == 1))
-    wanted.push_back(TableRows::onRoot);
-  const auto tables = gatherParticles(particles, comm, totalParticles_, gathered_, wanted);
-  if (csv_) {  // every rank formats and writes its block
-    const auto& block = tables.front();
+  // The Exodus fields need every row on rank 0, which then writes the CSV from them too: one
+  // gather of the table, where the CSV's blocks of ids on every rank took a second one, and
+  // their formatting in parallel did not pay for it (doc/performance.md).  Without the
+  // Exodus files every rank formats and writes its block.
+  const auto rows = exodus_ ? TableRows::onRoot : TableRows::inBlocks;
+  const auto table = gatherParticles(particles, comm, totalParticles_, gathered_, rows);
+  if (csv_) {
     std::vector<std::string> names;
     for (const auto& c : csvColumns_)
       names.push_back(c.csv);
     // The table's own columns when they are the CSV's, in order; a selection otherwise.
     std::vector<std::vector<double>> selected;
-    if (names != block.names)
+    if (names != table.names)
       for (const auto& name : names)
-        selected.push_back(block.column(name));
+        selected.push_back(table.column(name));
     writeCsvTableCollectively(directory_ + "/" + prefix_ + "_particles.csv", *comm, names,
-                              names == block.names ? block.columns : selected);
+                              names == table.names ? table.columns : selected);
   }
   if (!exodus_)
     return;
   ++exodusSteps_;
-  const auto& table = tables.back();
   const auto nodes = rootMap(ownership_.grid().numNodes(), comm);
   MultiVector gridOnRoot(nodes, gridFields.getNumVectors());
   gridOnRoot.doImport(gridFields, Import(gridFields.getMap(), nodes), Tpetra::INSERT);
@@ -455,9 +436,9 @@ std::vector<std::string> Output<Dim>::files() const {
                                                      const std::vector<std::string>&);             \
   template ParticleTable gatherParticles<D>(const ParticleSet<D>&,                                 \
                                             const Teuchos::RCP<const Comm>&, GlobalId, TableRows); \
-  template std::vector<ParticleTable> gatherParticles<D>(                                          \
-      const ParticleSet<D>&, const Teuchos::RCP<const Comm>&, GlobalId,                            \
-      const std::vector<TableColumn>&, const std::vector<TableRows>&);
+  template ParticleTable gatherParticles<D>(const ParticleSet<D>&,                                 \
+                                            const Teuchos::RCP<const Comm>&, GlobalId,             \
+                                            const std::vector<TableColumn>&, TableRows);
 IMPM_INSTANTIATE(1)
 IMPM_INSTANTIATE(2)
 #undef IMPM_INSTANTIATE

@@ -54,13 +54,11 @@ struct ParticleTable {
 // Where gatherParticles puts the rows: all on rank 0 (empty elsewhere), or in consecutive
 // blocks of ids of about equal size, rank 0 the first.
 enum class TableRows { onRoot, inBlocks };
-// Collective: one table of `columns` per entry of `rows`, from a single read of the particles.
+// Collective: the table of `columns`.
 template <int Dim>
-std::vector<ParticleTable> gatherParticles(const ParticleSet<Dim>& particles,
-                                           const Teuchos::RCP<const Comm>& comm,
-                                           GlobalId totalParticles,
-                                           const std::vector<TableColumn>& columns,
-                                           const std::vector<TableRows>& rows);
+ParticleTable gatherParticles(const ParticleSet<Dim>& particles,
+                              const Teuchos::RCP<const Comm>& comm, GlobalId totalParticles,
+                              const std::vector<TableColumn>& columns, TableRows rows);
 // Collective: every output column.
 template <int Dim>
 ParticleTable gatherParticles(const ParticleSet<Dim>& particles,

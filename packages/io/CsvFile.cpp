@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <numeric>
 #include <optional>
 #include <stdexcept>
 
@@ -127,6 +128,17 @@ int writeAllAt(MPI_File file, MPI_Offset offset, const std::string& text) {
   return error;
 }
 
+// The rows that the ranks after this one hold.  Collective.
+long long rowsAfterThisRank(MPI_Comm comm, std::size_t rows) {
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  const long long mine = static_cast<long long>(rows);
+  std::vector<long long> all(size);
+  MPI_Allgather(&mine, 1, MPI_LONG_LONG, all.data(), 1, MPI_LONG_LONG, comm);
+  return std::accumulate(all.begin() + rank + 1, all.end(), 0LL);
+}
+
 }  // namespace
 
 std::string formatCsvRows(const std::vector<std::vector<double>>& values) {
@@ -200,14 +212,15 @@ void writeCsvTableCollectively(const std::string& path, const Teuchos::Comm<int>
                                const std::vector<std::vector<double>>& localValues) {
   // The rows are formatted twice, once to count their bytes and once in blocks that are
   // written as they fill: a table of 10^6 particles is about 0.5 GB of text, which would
-  // otherwise be held whole (and its pages faulted in) for the write.  The last rank's
-  // bytes are no other rank's offset, so its rows (all of them on one rank) are not counted.
+  // otherwise be held whole (and its pages faulted in) for the write.  A rank's bytes are
+  // the offset of the ranks after it only where one of those has rows: the last rank's rows,
+  // and rank 0's when it holds the whole table, are not counted.
+  MPI_Comm raw = rawComm(comm);
   const std::string head = comm.getRank() == 0 ? header(columns) : std::string();
-  const bool counted = comm.getRank() + 1 < comm.getSize();
+  const bool counted = rowsAfterThisRank(raw, rowCount(localValues)) > 0;
   long long size = counted ? static_cast<long long>(head.size()) + formattedSize(localValues) : 0;
   long long offset = 0;
   // Each rank's bytes go right after those of the ranks before it.
-  MPI_Comm raw = rawComm(comm);
   MPI_Exscan(&size, &offset, 1, MPI_LONG_LONG, MPI_SUM, raw);
   if (comm.getRank() == 0)
     offset = 0;  // MPI_Exscan leaves rank 0's result undefined

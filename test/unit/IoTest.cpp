@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <sstream>
 
@@ -49,16 +50,16 @@ TEST(Csv, HistoryAndTableReadBackExactly) {
   std::remove(path.c_str());
 }
 
-// Rank r holds rows [start_r, start_r + (r + 1) m) of a table of (1 + 2 + ... + P) m rows;
-// the collective file must equal the serial file of the whole.
-void expectCollectiveTableEqualsTheSerialOne(int m) {
+// Rank r holds rows [start_r, start_r + rowsOf(r)) of the table; the collective file must
+// equal the serial file of the whole.  By default rank r holds (r + 1) m rows.
+void expectCollectiveTableEqualsTheSerialOne(int m, const std::function<int(int)>& rowsOf = {}) {
   const auto comm = Teuchos::DefaultComm<int>::getComm();
   const int rank = comm->getRank(), size = comm->getSize();
   const auto value = [](int row, int c) { return c == 0 ? row : 1.0 / (row + 3.0) - c; };
   std::vector<std::vector<double>> local(3), whole(3);
   int row = 0;
   for (int r = 0; r < size; ++r)
-    for (int k = 0; k < (r + 1) * m; ++k, ++row)
+    for (int k = 0; k < (rowsOf ? rowsOf(r) : (r + 1) * m); ++k, ++row)
       for (int c = 0; c < 3; ++c) {
         whole[c].push_back(value(row, c));
         if (r == rank)
@@ -91,6 +92,15 @@ TEST(Csv, CollectiveTableEqualsTheSerialOne) {
 
 TEST(Csv, CollectiveTableWrittenInBlocksEqualsTheSerialOne) {
   expectCollectiveTableEqualsTheSerialOne(400000);
+}
+
+// Ranks without rows anywhere: the whole table on rank 0 (as the particle output writes it
+// beside the Exodus files), on the last rank, or on every rank but the first.
+TEST(Csv, CollectiveTableWithRanksWithoutRowsEqualsTheSerialOne) {
+  const int last = Teuchos::DefaultComm<int>::getComm()->getSize() - 1;
+  expectCollectiveTableEqualsTheSerialOne(0, [](int r) { return r == 0 ? 7 : 0; });
+  expectCollectiveTableEqualsTheSerialOne(0, [last](int r) { return r == last ? 7 : 0; });
+  expectCollectiveTableEqualsTheSerialOne(0, [](int r) { return r == 0 ? 0 : 3 + r; });
 }
 
 TEST(Exodus, MeshVariablesAndTimeStepsReadBack) {
