@@ -191,10 +191,12 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
           c.field == "corners0")))
       geometry.push_back(c);
   gathered_ = unionOf(all, {csvColumns_, exodusColumns_, geometry});
-  // The particles are needed here only for the Exodus meshes.
-  const auto table = exodus_ ? gatherParticles(particles, ownership.comm(), totalParticles,
-                                               gathered_, TableRows::onRoot)
-                             : ParticleTable();
+  // The particles are read here for the Exodus meshes and a fresh start's initial state
+  // (writeInitialFields): one gather for both.
+  if (exodus_ || (csv_ && !resume))
+    initial_ = gatherParticles(particles, ownership.comm(), totalParticles, gathered_, tableRows());
+  const ParticleTable none;
+  const ParticleTable& table = initial_ ? *initial_ : none;
   if (!root_)
     return;
   std::error_code error;
@@ -276,6 +278,8 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
     if (f && keep > 0 && !f->continued())
       restarted.push_back(f->path());
   report();
+  if (resume)  // a restart's initial state is in the files already
+    initial_.reset();
 }
 
 namespace {
@@ -372,13 +376,31 @@ void Output<Dim>::writeFields(double time, const ParticleSet<Dim>& particles,
                               const MultiVector& gridFields, const std::vector<double>& globals) {
   if (!writesFields())
     return;
-  const auto& comm = ownership_.comm();
+  write(time,
+        gatherParticles(particles, ownership_.comm(), totalParticles_, gathered_, tableRows()),
+        gridFields, globals);
+}
+
+template <int Dim>
+void Output<Dim>::writeInitialFields(double time, const MultiVector& gridFields,
+                                     const std::vector<double>& globals) {
+  if (!writesFields())
+    return;
+  if (!initial_)
+    throw std::logic_error("Output::writeInitialFields: no initial state (written, or a restart)");
+  const ParticleTable table = std::move(*initial_);
+  initial_.reset();
+  write(time, table, gridFields, globals);
+}
+
+template <int Dim>
+void Output<Dim>::write(double time, const ParticleTable& table, const MultiVector& gridFields,
+                        const std::vector<double>& globals) {
   // The Exodus fields need every row on rank 0, which then writes the CSV from them too: one
   // gather of the table, where the CSV's blocks of ids on every rank took a second one, and
   // their formatting in parallel did not pay for it (doc/performance.md).  Without the
   // Exodus files every rank formats and writes its block.
-  const auto rows = exodus_ ? TableRows::onRoot : TableRows::inBlocks;
-  const auto table = gatherParticles(particles, comm, totalParticles_, gathered_, rows);
+  const auto& comm = ownership_.comm();
   if (csv_) {
     std::vector<std::string> names;
     for (const auto& c : csvColumns_)

@@ -16,6 +16,7 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -95,6 +96,11 @@ class Output {
   // Collective.
   void writeFields(double time, const ParticleSet<Dim>& particles, const MultiVector& gridFields,
                    const std::vector<double>& globals);
+  // The initial state's fields after a fresh start: the particles as the constructor read
+  // them (it gathered them for the Exodus meshes; the caller changes none in between), so that
+  // they are not gathered twice.  Once, not after a restart.  Collective.
+  void writeInitialFields(double time, const MultiVector& gridFields,
+                          const std::vector<double>& globals);
   // Rank 0 appends the row; a failed write stops every rank.  Collective.
   void appendHistory(const std::vector<double>& row) const;
   // Paths of the files written, for the user.
@@ -103,6 +109,11 @@ class Output {
   int exodusSteps() const { return exodusSteps_; }
 
  private:
+  // Where the gathered rows go: every row on rank 0 for the Exodus files (which then writes
+  // the CSV from them too), else the CSV's blocks on every rank.
+  TableRows tableRows() const { return exodus_ ? TableRows::onRoot : TableRows::inBlocks; }
+  void write(double time, const ParticleTable& table, const MultiVector& gridFields,
+             const std::vector<double>& globals);
   ExodusMesh domainMesh(const ParticleTable& table) const;
   std::vector<std::vector<double>> domainDisplacements(const ParticleTable& table) const;
   std::vector<std::vector<double>> elementValues(const ParticleTable& table) const;
@@ -121,6 +132,7 @@ class Output {
   int exodusSteps_ = 0;
   std::unique_ptr<ExodusFile> gridFile_, particleFile_, domainFile_;
   std::unique_ptr<CsvHistory> history_;
+  std::optional<ParticleTable> initial_;  // the constructor's, until writeInitialFields
 };
 
 }  // namespace impm

@@ -392,7 +392,7 @@ std::unique_ptr<Output<Dim>> Simulation<Dim>::startOutput(const History<Dim>& hi
   initial.loadFactor = isStatic(deck_.sublist("Time Integration")) ? 0.0 : 1.0;
   const auto F0 = reactions();
   output->appendHistory(history.row(initial, F0[0], F0[1], particles_, *comm_));
-  collectively(*comm_, [&] { output->writeFields(0.0, particles_, gridFields_->values(), F0); });
+  collectively(*comm_, [&] { output->writeInitialFields(0.0, gridFields_->values(), F0); });
   return output;
 }
 

@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultComm.hpp>
@@ -183,6 +186,52 @@ TEST(Output, ParticlesAreGatheredSortedById) {
   for (std::size_t p = 0; p < 20; ++p) {
     EXPECT_EQ(id[p], double(p));
     EXPECT_NEAR(X[p], (p + 0.5) / 20.0, 1e-15);
+  }
+}
+
+// The initial state is written from the table the constructor gathered for the Exodus
+// meshes (the particles as it read them: one gather for both), a later state from the
+// particles at its write; the initial state is written once.
+TEST(Output, InitialStateIsTheConstructorsTable) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  NodeOwnership<1> own(makeGridGeometry<1>({0.0}, {1.0}, {10}), comm);
+  const auto deck = deckWithBar(0.0, 1.0, 2);
+  Bodies<1> bodies(deck, {"steel"}, own.grid());
+  std::vector<std::shared_ptr<Material<1>>> mats = {
+      createMaterial<1>("steel", deck.sublist("Materials").sublist("steel"))};
+  auto ps = bodies.createParticles(Method::cpdi, own.decomposition(), comm->getRank(), mats, true);
+  const auto params = outputValidParameters();  // CSV and Exodus
+  const std::string directory = "output_test_initial";
+  Output<1> output(params, directory, "bar", own, ps, 20, {"step"}, {"mass"}, {"F0"});
+  const MultiVector grid(own.nodeMap(), 1);
+  const auto uColumn = [&] {  // the particle CSV's u, read on rank 0
+    std::ifstream in(directory + "/bar_particles.csv");
+    std::string line, cell;
+    std::getline(in, line);
+    std::istringstream header(line);
+    std::size_t column = 0;
+    while (std::getline(header, cell, ',') && cell != "u")
+      ++column;
+    std::vector<double> u;
+    while (std::getline(in, line)) {
+      std::istringstream row(line);
+      for (std::size_t c = 0; c <= column; ++c)
+        std::getline(row, cell, ',');
+      u.push_back(std::stod(cell));
+    }
+    return u;
+  };
+  Kokkos::deep_copy(ps.u, 0.25);  // after the constructor read the particles
+  output.writeInitialFields(0.0, grid, {0.0});
+  comm->barrier();
+  if (comm->getRank() == 0)
+    EXPECT_EQ(uColumn(), std::vector<double>(20, 0.0));
+  EXPECT_THROW(output.writeInitialFields(0.0, grid, {0.0}), std::logic_error);
+  output.writeFields(1.0, ps, grid, {0.0});
+  comm->barrier();
+  if (comm->getRank() == 0) {
+    EXPECT_EQ(uColumn(), std::vector<double>(20, 0.25));
+    std::filesystem::remove_all(directory);
   }
 }
 
