@@ -151,14 +151,21 @@ TEST(Bodies, ShapesFill2DCellsOnSubCells) {
   }
 }
 
-TEST(Output, ParticlesAreGatheredSortedById) {
-  auto comm = Teuchos::DefaultComm<int>::getComm();
-  NodeOwnership<1> own(makeGridGeometry<1>({0.0}, {1.0}, {10}), comm);
-  const auto deck = deckWithBar(0.0, 1.0, 2);
-  Bodies<1> bodies(deck, {"steel"}, own.grid());
+// The 20 cpdi particles of a bar over [0, 1] on 10 cells, as this rank holds them.
+struct BarOfTwentyParticles {
+  Teuchos::RCP<const Teuchos::Comm<int>> comm = Teuchos::DefaultComm<int>::getComm();
+  NodeOwnership<1> own{makeGridGeometry<1>({0.0}, {1.0}, {10}), comm};
+  Teuchos::ParameterList deck = deckWithBar(0.0, 1.0, 2);
+  Bodies<1> bodies{deck, {"steel"}, own.grid()};
   std::vector<std::shared_ptr<Material<1>>> mats = {
       createMaterial<1>("steel", deck.sublist("Materials").sublist("steel"))};
-  auto ps = bodies.createParticles(Method::cpdi, own.decomposition(), comm->getRank(), mats, true);
+  ParticleSet<1> ps =
+      bodies.createParticles(Method::cpdi, own.decomposition(), comm->getRank(), mats, true);
+};
+
+TEST(Output, ParticlesAreGatheredSortedById) {
+  BarOfTwentyParticles bar;
+  auto& [comm, own, deck, bodies, mats, ps] = bar;
   // Stored out of id order (reversed): the table sorts them, on one rank as on several.
   for (std::size_t p = 0, q = ps.size(); p + 1 < q; ++p, --q) {
     std::swap(ps.id(p), ps.id(q - 1));
@@ -193,13 +200,8 @@ TEST(Output, ParticlesAreGatheredSortedById) {
 // meshes (the particles as it read them: one gather for both), a later state from the
 // particles at its write; the initial state is written once.
 TEST(Output, InitialStateIsTheConstructorsTable) {
-  auto comm = Teuchos::DefaultComm<int>::getComm();
-  NodeOwnership<1> own(makeGridGeometry<1>({0.0}, {1.0}, {10}), comm);
-  const auto deck = deckWithBar(0.0, 1.0, 2);
-  Bodies<1> bodies(deck, {"steel"}, own.grid());
-  std::vector<std::shared_ptr<Material<1>>> mats = {
-      createMaterial<1>("steel", deck.sublist("Materials").sublist("steel"))};
-  auto ps = bodies.createParticles(Method::cpdi, own.decomposition(), comm->getRank(), mats, true);
+  BarOfTwentyParticles bar;
+  auto& [comm, own, deck, bodies, mats, ps] = bar;
   const auto params = outputValidParameters();  // CSV and Exodus
   const std::string directory = "output_test_initial";
   Output<1> output(params, directory, "bar", own, ps, 20, {"step"}, {"mass"}, {"F0"});
@@ -224,8 +226,9 @@ TEST(Output, InitialStateIsTheConstructorsTable) {
   Kokkos::deep_copy(ps.u, 0.25);  // after the constructor read the particles
   output.writeInitialFields(0.0, grid, {0.0});
   comm->barrier();
-  if (comm->getRank() == 0)
+  if (comm->getRank() == 0) {
     EXPECT_EQ(uColumn(), std::vector<double>(20, 0.0));
+  }
   EXPECT_THROW(output.writeInitialFields(0.0, grid, {0.0}), std::logic_error);
   output.writeFields(1.0, ps, grid, {0.0});
   comm->barrier();
