@@ -197,8 +197,11 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
     initial_ = gatherParticles(particles, ownership.comm(), totalParticles, gathered_, tableRows());
   const ParticleTable none;
   const ParticleTable& table = initial_ ? *initial_ : none;
-  if (!root_)
+  if (!root_) {
+    if (resume)  // as below: every rank drops it, so that none writes it
+      initial_.reset();
     return;
+  }
   std::error_code error;
   std::filesystem::create_directories(directory, error);
   if (error)
