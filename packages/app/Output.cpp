@@ -399,10 +399,7 @@ void Output<Dim>::writeInitialFields(double time, const MultiVector& gridFields,
 template <int Dim>
 void Output<Dim>::write(double time, const ParticleTable& table, const MultiVector& gridFields,
                         const std::vector<double>& globals) {
-  // The Exodus fields need every row on rank 0, which then writes the CSV from them too: one
-  // gather of the table, where the CSV's blocks of ids on every rank took a second one, and
-  // their formatting in parallel did not pay for it (doc/performance.md).  Without the
-  // Exodus files every rank formats and writes its block.
+  // The table's rows are where tableRows() put them; the collective CSV write takes either.
   const auto& comm = ownership_.comm();
   if (csv_) {
     std::vector<std::string> names;

@@ -109,8 +109,10 @@ class Output {
   int exodusSteps() const { return exodusSteps_; }
 
  private:
-  // Where the gathered rows go: every row on rank 0 for the Exodus files (which then writes
-  // the CSV from them too), else the CSV's blocks on every rank.
+  // Where the gathered rows go: every row on rank 0 for the Exodus files, which then writes
+  // the CSV from them too (one gather per write, where the CSV's blocks of ids on every rank
+  // took a second one and their formatting in parallel did not pay for it,
+  // doc/performance.md); without the Exodus files, the CSV's blocks on every rank.
   TableRows tableRows() const { return exodus_ ? TableRows::onRoot : TableRows::inBlocks; }
   void write(double time, const ParticleTable& table, const MultiVector& gridFields,
              const std::vector<double>& globals);

@@ -15,7 +15,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <numeric>
 #include <optional>
 #include <stdexcept>
 
@@ -128,15 +127,14 @@ int writeAllAt(MPI_File file, MPI_Offset offset, const std::string& text) {
   return error;
 }
 
-// The rows that the ranks after this one hold.  Collective.
+// The rows that the ranks after this one hold: all rows less those of this rank and the ranks
+// before it (two reductions, O(log P) each).  Collective.
 long long rowsAfterThisRank(MPI_Comm comm, std::size_t rows) {
-  int rank = 0, size = 1;
-  MPI_Comm_rank(comm, &rank);
-  MPI_Comm_size(comm, &size);
   const long long mine = static_cast<long long>(rows);
-  std::vector<long long> all(size);
-  MPI_Allgather(&mine, 1, MPI_LONG_LONG, all.data(), 1, MPI_LONG_LONG, comm);
-  return std::accumulate(all.begin() + rank + 1, all.end(), 0LL);
+  long long throughThisRank = 0, all = 0;
+  MPI_Scan(&mine, &throughThisRank, 1, MPI_LONG_LONG, MPI_SUM, comm);
+  MPI_Allreduce(&mine, &all, 1, MPI_LONG_LONG, MPI_SUM, comm);
+  return all - throughThisRank;
 }
 
 }  // namespace
