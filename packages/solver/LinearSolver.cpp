@@ -10,6 +10,7 @@
 #include <Thyra_VectorStdOps.hpp>
 
 #include "core/Errors.hpp"
+#include "solver/BandedLU.hpp"
 #include "solver/Ifpack2Factory.hpp"
 
 namespace impm {
@@ -208,6 +209,8 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolveStrat
   using Base = Thyra::PreconditionerFactoryBase<double>;
   builder.setPreconditioningStrategyFactory(Teuchos::abstractFactoryStd<Base, Ifpack2Factory>(),
                                             "Ifpack2");
+  builder.setPreconditioningStrategyFactory(Teuchos::abstractFactoryStd<Base, BandedLUFactory>(),
+                                            "Banded LU");
   Stratimikos::enableMueLu<LO, GO, Node>(builder);
 
   auto list = Teuchos::rcp(new Teuchos::ParameterList(params));

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Benchmark: P1 (the column under self-weight, 20 load steps, neo-Hookean) with cpdi as
 the particle count grows: the deck's preconditioner (LAPACK's banded LU of each rank's rows,
-through Ifpack2's block relaxation) against additive Schwarz with a KLU2 LU of each rank's
-rows (the deck's choice before), Ifpack2 ILUT (impm's default) and MueLu, on 1 and 2 ranks.
+impm's "Banded LU") against the same LU through Ifpack2's block relaxation (the deck's choice
+before), additive Schwarz with a KLU2 LU of each rank's rows (the choice before that), Ifpack2
+ILUT (impm's default) and MueLu, on 1 and 2 ranks.
 
 The column's grid is one cell wide, {1, N} cells with 2 x 2 particles per cell, so N =
 particles / 4; cells are 1 wide and 50 / N tall.  Records the wall time of the whole run,
@@ -27,12 +28,19 @@ from benchlib import ROOT, run_impm, write_section
 DECK = os.path.join(ROOT, "input", "column_self_weight.xml")
 MUELU = "Solver/Linear Solver/Preconditioner Types/MueLu/"
 IFPACK2 = "Solver/Linear Solver/Preconditioner Types/Ifpack2/"
-ILUT = [IFPACK2 + "Prec Type=ILUT"]
-SCHWARZ_KLU2 = [IFPACK2 + "Prec Type=SCHWARZ",
+USE_IFPACK2 = "Solver/Linear Solver/Preconditioner Type=Ifpack2"
+ILUT = [USE_IFPACK2, IFPACK2 + "Prec Type=ILUT"]
+SCHWARZ_KLU2 = [USE_IFPACK2, IFPACK2 + "Prec Type=SCHWARZ",
                 IFPACK2 + "Ifpack2 Settings/schwarz: inner preconditioner name=AMESOS2"]
+IFPACK2_BANDED = [USE_IFPACK2, IFPACK2 + "Prec Type=BLOCK_RELAXATION"] + [
+    IFPACK2 + "Ifpack2 Settings/" + s for s in
+    ["relaxation: container=Banded", "partitioner: type=linear", "partitioner: local parts=1",
+     "relaxation: type=Jacobi"]]
 CONFIGS = [
     ("banded LU", 1, []),
     ("banded LU", 2, []),
+    ("Ifpack2 banded", 1, IFPACK2_BANDED),
+    ("Ifpack2 banded", 2, IFPACK2_BANDED),
     ("Schwarz KLU2", 1, SCHWARZ_KLU2),
     ("Schwarz KLU2", 2, SCHWARZ_KLU2),
     ("ILUT", 1, ILUT),

@@ -29,10 +29,12 @@ CONFIGS = {
     "default, no reuse": [LS + "Preconditioner Type=MueLu", "Solver/Preconditioner Reuse=off"],
     "default with GMRES": [LS + "Preconditioner Type=MueLu",
                            LS + "Linear Solver Types/Belos/Solver Type=Pseudo Block GMRES"],
-    "ILUT": [LS + "Preconditioner Types/Ifpack2/Prec Type=ILUT"],
+    "ILUT": [LS + "Preconditioner Type=Ifpack2", LS + "Preconditioner Types/Ifpack2/Prec Type=ILUT"],
     # The P1 deck's own banded LU suits a column a few cells wide only; on these grids an
-    # exact LU per rank is KLU2's (additive Schwarz).
-    "Schwarz KLU2": [LS + "Preconditioner Types/Ifpack2/Prec Type=SCHWARZ",
+    # exact LU per rank is KLU2's (additive Schwarz).  The deck names its preconditioner
+    # type, so each configuration names its own.
+    "Schwarz KLU2": [LS + "Preconditioner Type=Ifpack2",
+                     LS + "Preconditioner Types/Ifpack2/Prec Type=SCHWARZ",
                      LS + "Preconditioner Types/Ifpack2/Ifpack2 Settings/"
                      "schwarz: inner preconditioner name=AMESOS2"],
 }

@@ -14,6 +14,7 @@
 
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
+#include "solver/BandedLU.hpp"
 #include "solver/LinearSolver.hpp"
 #include "solver/NewtonSolver.hpp"
 #include "solver/PreconditionerReuse.hpp"
@@ -247,9 +248,11 @@ Teuchos::RCP<const Thyra::LinearOpBase<double>> thyraOperator(const Teuchos::RCP
       Teuchos::rcp_implicit_cast<const Tpetra::Operator<double, LO, GO, Node>>(A));
 }
 
-void expectSolvesFull(const Teuchos::ParameterList& params) {
+// Solves A x = 1 (A: the Laplacian of 200 unknowns unless given) with the full list.
+void expectSolvesFull(const Teuchos::ParameterList& params, Teuchos::RCP<CrsMatrix> A = {}) {
   auto comm = Teuchos::DefaultComm<int>::getComm();
-  const auto A = laplacian(comm, 200);
+  if (A.is_null())
+    A = laplacian(comm, 200);
   const auto map = A->getRowMap();
   auto lows = createLinearSolveStrategy(params, comm, "test");
   auto solver = Thyra::linearOpWithSolve(*lows, thyraOperator(A));
@@ -337,9 +340,9 @@ TEST(LinearSolver, SchwarzWithKlu2Subdomains) {
   expectSolves(p);
 }
 
-// LAPACK's banded LU of each rank's rows (Ifpack2 block relaxation, one banded block per
-// rank: input/column_self_weight.xml).  Over the default ILUT its settings are not merged
-// with ILUT's, which a block relaxation rejects; ILUT's own settings still merge.
+// LAPACK's banded LU of each rank's rows through Ifpack2 (block relaxation, one banded block
+// per rank).  Over the default ILUT its settings are not merged with ILUT's, which a block
+// relaxation rejects; ILUT's own settings still merge.
 TEST(LinearSolver, BandedLuOverTheIlutDefault) {
   Teuchos::ParameterList p;
   auto& settings = ifpack2Settings(p, "BLOCK_RELAXATION");
@@ -356,6 +359,83 @@ TEST(LinearSolver, BandedLuOverTheIlutDefault) {
   const auto kept = mergedIfpack2Settings(tuned);
   EXPECT_EQ(kept.get<double>("fact: ilut level-of-fill"), 1.0);
   EXPECT_TRUE(kept.isParameter("fact: drop tolerance"));
+}
+
+// A non-symmetric banded matrix of n unknowns, two bands below the diagonal and one above
+// (row i: 4 at i, -1 at i - 1, -0.5 at i - 2, -2 at i + 1); with `withinRanks` only the
+// couplings between unknowns of the same rank.
+Teuchos::RCP<CrsMatrix> bandedMatrix(const Teuchos::RCP<const Comm>& comm, GO n, bool withinRanks) {
+  auto map = Teuchos::rcp(new Map(n, 0, comm));
+  auto A = Teuchos::rcp(new CrsMatrix(map, 4));
+  for (std::size_t k = 0; k < map->getNodeNumElements(); ++k) {
+    const GO i = map->getGlobalElement(k);
+    std::vector<GO> cols;
+    std::vector<double> vals;
+    for (const auto& [j, v] :
+         {std::pair<GO, double>{i - 2, -0.5}, {i - 1, -1.0}, {i, 4.0}, {i + 1, -2.0}})
+      if (j >= 0 && j < n && (!withinRanks || map->isNodeGlobalElement(j)))
+        cols.push_back(j), vals.push_back(v);
+    A->insertGlobalValues(i, Teuchos::ArrayView<const GO>(cols),
+                          Teuchos::ArrayView<const double>(vals));
+  }
+  A->fillComplete();
+  return A;
+}
+
+// On a matrix without couplings between ranks the banded LU is its exact inverse, on any
+// number of ranks: M (A x) = x, with the bandwidths read from the rows.
+TEST(BandedLU, InvertsEachRanksRowsExactly) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  const auto A = bandedMatrix(comm, 101, true);
+  const BandedLU M(*A);
+  EXPECT_EQ(M.lowerBandwidth(), 2);
+  EXPECT_EQ(M.upperBandwidth(), 1);
+  Vector x(A->getRowMap()), b(A->getRowMap()), y(A->getRowMap());
+  for (std::size_t k = 0; k < x.getLocalLength(); ++k)
+    x.replaceLocalValue(k, std::sin(1.0 + A->getRowMap()->getGlobalElement(k)));
+  A->apply(x, b);
+  y.putScalar(7.0);  // beta = 0 overwrites it
+  M.apply(b, y);
+  y.update(-1.0, x, 1.0);
+  EXPECT_LT(y.normInf(), 1e-13);
+  // Y = alpha M X + beta Y
+  Vector z(x, Teuchos::Copy);
+  M.apply(b, z, Teuchos::NO_TRANS, 2.0, -1.0);  // 2 x - x
+  z.update(-1.0, x, 1.0);
+  EXPECT_LT(z.normInf(), 1e-13);
+}
+
+// A zero row makes the block singular: a NumericalError naming the unknown, not a crash.
+TEST(BandedLU, SingularRowsAreANumericalError) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  auto map = Teuchos::rcp(new Map(GO(4 * comm->getSize()), 0, comm));
+  auto A = Teuchos::rcp(new CrsMatrix(map, 1));
+  for (std::size_t k = 0; k < map->getNodeNumElements(); ++k) {
+    const GO i = map->getGlobalElement(k);
+    const double v = k == 2 ? 0.0 : 1.0;
+    A->insertGlobalValues(i, Teuchos::tuple<GO>(i), Teuchos::tuple<double>(v));
+  }
+  A->fillComplete();
+  try {
+    BandedLU M(*A);
+    FAIL() << "no error";
+  } catch (const NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("zero pivot at unknown " +
+                                         std::to_string(map->getGlobalElement(2))),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+// Through Stratimikos as the deck's "Banded LU": exact on one rank, block Jacobi under
+// GMRES on several, where the rows couple across ranks.
+TEST(LinearSolver, BandedLuPreconditioner) {
+  Teuchos::ParameterList p;
+  p.set("Preconditioner Type", "Banded LU");
+  expectSolves(p);
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  expectSolvesFull(mergedLinearSolverParameters(p, OperatorKind::small, 1, comm->getSize()),
+                   bandedMatrix(comm, 200, false));
 }
 
 // The MueLu list of the 2-D symmetric default on `ranks` ranks, merged with a deck's list

@@ -1,0 +1,143 @@
+#include "solver/BandedLU.hpp"
+
+#include <Teuchos_LAPACK.hpp>
+#include <Thyra_DefaultPreconditioner.hpp>
+#include <Thyra_TpetraLinearOp.hpp>
+#include <Thyra_TpetraThyraWrappers.hpp>
+
+#include "core/Errors.hpp"
+
+namespace impm {
+
+namespace {
+
+constexpr LO kNoRow = -1;
+
+// For each local column of A, the local row of the same unknown on this rank, or kNoRow (a
+// column of another rank's unknown: block Jacobi leaves it out).  A column map that begins
+// with the row map (impm's Jacobians) needs no look-up.
+std::vector<LO> rowsOfColumns(const CrsMatrix& A) {
+  const Map& rows = *A.getRowMap();
+  const Map& columns = *A.getColMap();
+  const LO n = static_cast<LO>(rows.getNodeNumElements());
+  const LO m = static_cast<LO>(columns.getNodeNumElements());
+  std::vector<LO> row(m, kNoRow);
+  const bool fitted = columns.isLocallyFitted(rows);
+  for (LO c = 0; c < m; ++c)
+    row[c] = fitted ? (c < n ? c : kNoRow) : rows.getLocalElement(columns.getGlobalElement(c));
+  for (auto& r : row)
+    if (r == Teuchos::OrdinalTraits<LO>::invalid())
+      r = kNoRow;
+  return row;
+}
+
+Teuchos::RCP<const CrsMatrix> matrixOf(const Thyra::LinearOpSourceBase<double>& source) {
+  using Extract = Thyra::TpetraOperatorVectorExtraction<double, LO, GO, Node>;
+  const auto op = source.getOp();
+  if (Teuchos::rcp_dynamic_cast<const Thyra::TpetraLinearOp<double, LO, GO, Node>>(op).is_null())
+    return Teuchos::null;
+  return Teuchos::rcp_dynamic_cast<const CrsMatrix>(Extract::getConstTpetraOperator(op));
+}
+
+}  // namespace
+
+BandedLU::BandedLU(const CrsMatrix& A)
+    : domain_(A.getDomainMap()),
+      range_(A.getRangeMap()),
+      n_(static_cast<int>(A.getRowMap()->getNodeNumElements())) {
+  const auto local = A.getLocalMatrixHost();
+  const auto rowOf = rowsOfColumns(A);
+  // The bandwidths first, then the band: LAPACK wants kl more rows above it for the fill-in
+  // of the row exchanges, so it is 2 kl + ku + 1 rows tall.
+  for (int i = 0; i < n_; ++i)
+    for (auto k = local.graph.row_map(i); k < local.graph.row_map(i + 1); ++k)
+      if (const LO j = rowOf[local.graph.entries(k)]; j != kNoRow) {
+        kl_ = std::max(kl_, i - j);
+        ku_ = std::max(ku_, j - i);
+      }
+  const int ldab = 2 * kl_ + ku_ + 1;
+  band_.assign(static_cast<std::size_t>(ldab) * n_, 0.0);
+  for (int i = 0; i < n_; ++i)
+    for (auto k = local.graph.row_map(i); k < local.graph.row_map(i + 1); ++k)
+      if (const LO j = rowOf[local.graph.entries(k)]; j != kNoRow)
+        band_[static_cast<std::size_t>(j) * ldab + kl_ + ku_ + i - j] += local.values(k);
+  pivots_.resize(n_);
+  int info = 0;
+  if (n_ > 0)
+    Teuchos::LAPACK<int, double>().GBTRF(n_, n_, kl_, ku_, band_.data(), ldab, pivots_.data(),
+                                         &info);
+  if (info > 0)
+    throw NumericalError("the banded LU of rank " + std::to_string(A.getComm()->getRank()) +
+                         "'s rows is singular: zero pivot at unknown " +
+                         std::to_string(A.getRowMap()->getGlobalElement(info - 1)));
+  if (info < 0)
+    throw std::logic_error("dgbtrf: argument " + std::to_string(-info) + " is invalid");
+}
+
+void BandedLU::apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode, double alpha,
+                     double beta) const {
+  if (mode != Teuchos::NO_TRANS)
+    throw std::logic_error("BandedLU::apply: only the operator itself, not its transpose");
+  if (X.getLocalLength() != static_cast<std::size_t>(n_))
+    throw std::logic_error("BandedLU::apply: the vector's rows are not the matrix's");
+  MultiVector Z(X, Teuchos::Copy);
+  const int ldab = 2 * kl_ + ku_ + 1;
+  for (std::size_t v = 0; v < Z.getNumVectors() && n_ > 0; ++v) {
+    auto z = Z.getDataNonConst(v);
+    int info = 0;
+    Teuchos::LAPACK<int, double>().GBTRS('N', n_, kl_, ku_, 1, band_.data(), ldab, pivots_.data(),
+                                         z.getRawPtr(), n_, &info);
+    if (info != 0)
+      throw std::logic_error("dgbtrs: argument " + std::to_string(-info) + " is invalid");
+  }
+  Y.update(alpha, Z, beta);
+}
+
+bool BandedLUFactory::isCompatible(const Thyra::LinearOpSourceBase<double>& fwdOpSrc) const {
+  return !matrixOf(fwdOpSrc).is_null();
+}
+
+Teuchos::RCP<Thyra::PreconditionerBase<double>> BandedLUFactory::createPrec() const {
+  return Teuchos::rcp(new Thyra::DefaultPreconditioner<double>);
+}
+
+void BandedLUFactory::initializePrec(
+    const Teuchos::RCP<const Thyra::LinearOpSourceBase<double>>& fwdOpSrc,
+    Thyra::PreconditionerBase<double>* prec, Thyra::ESupportSolveUse /*supportSolveUse*/) const {
+  const auto A = matrixOf(*fwdOpSrc);
+  auto* target = dynamic_cast<Thyra::DefaultPreconditioner<double>*>(prec);
+  if (A.is_null() || !target)
+    throw std::logic_error("Banded LU: the operator is not a Tpetra::CrsMatrix");
+  Teuchos::RCP<Tpetra::Operator<double, LO, GO, Node>> op = Teuchos::rcp(new BandedLU(*A));
+  target->initializeUnspecified(Thyra::createLinearOp(op));
+}
+
+void BandedLUFactory::uninitializePrec(
+    Thyra::PreconditionerBase<double>* prec,
+    Teuchos::RCP<const Thyra::LinearOpSourceBase<double>>* fwdOpSrc,
+    Thyra::ESupportSolveUse* supportSolveUse) const {
+  if (auto* target = dynamic_cast<Thyra::DefaultPreconditioner<double>*>(prec))
+    target->uninitialize();
+  if (fwdOpSrc)
+    *fwdOpSrc = Teuchos::null;
+  if (supportSolveUse)
+    *supportSolveUse = Thyra::SUPPORT_SOLVE_UNSPECIFIED;
+}
+
+void BandedLUFactory::setParameterList(const Teuchos::RCP<Teuchos::ParameterList>& list) {
+  list->validateParametersAndSetDefaults(*getValidParameters());
+  list_ = list;
+}
+
+Teuchos::RCP<Teuchos::ParameterList> BandedLUFactory::unsetParameterList() {
+  auto old = list_;
+  list_ = Teuchos::null;
+  return old;
+}
+
+Teuchos::RCP<const Teuchos::ParameterList> BandedLUFactory::getValidParameters() const {
+  static const auto valid = Teuchos::rcp(new Teuchos::ParameterList("Banded LU"));
+  return valid;
+}
+
+}  // namespace impm
