@@ -80,17 +80,28 @@ void BandedLU::apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode
     throw std::logic_error("BandedLU::apply: only the operator itself, not its transpose");
   if (X.getLocalLength() != static_cast<std::size_t>(n_))
     throw std::logic_error("BandedLU::apply: the vector's rows are not the matrix's");
+  if (beta == 0.0) {  // the Krylov solvers' case: solved in Y's own storage, nothing allocated
+    Tpetra::deep_copy(Y, X);
+    solveInPlace(Y);
+    if (alpha != 1.0)
+      Y.scale(alpha);
+    return;
+  }
   MultiVector Z(X, Teuchos::Copy);
+  solveInPlace(Z);
+  Y.update(alpha, Z, beta);
+}
+
+void BandedLU::solveInPlace(MultiVector& B) const {
   const int ldab = 2 * kl_ + ku_ + 1;
-  for (std::size_t v = 0; v < Z.getNumVectors() && n_ > 0; ++v) {
-    auto z = Z.getDataNonConst(v);
+  for (std::size_t v = 0; v < B.getNumVectors() && n_ > 0; ++v) {
+    auto b = B.getDataNonConst(v);
     int info = 0;
     Teuchos::LAPACK<int, double>().GBTRS('N', n_, kl_, ku_, 1, band_.data(), ldab, pivots_.data(),
-                                         z.getRawPtr(), n_, &info);
+                                         b.getRawPtr(), n_, &info);
     if (info != 0)
       throw std::logic_error("dgbtrs: argument " + std::to_string(-info) + " is invalid");
   }
-  Y.update(alpha, Z, beta);
 }
 
 bool BandedLUFactory::isCompatible(const Thyra::LinearOpSourceBase<double>& fwdOpSrc) const {

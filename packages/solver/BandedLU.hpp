@@ -35,6 +35,9 @@ class BandedLU : public Tpetra::Operator<double, LO, GO, Node> {
   int upperBandwidth() const { return ku_; }
 
  private:
+  // B = A_block^-1 B, column by column.
+  void solveInPlace(MultiVector& B) const;
+
   Teuchos::RCP<const Map> domain_, range_;
   int n_ = 0, kl_ = 0, ku_ = 0;
   std::vector<double> band_;  // LAPACK's band storage, 2 kl + ku + 1 rows per column

@@ -403,6 +403,9 @@ TEST(BandedLU, InvertsEachRanksRowsExactly) {
   M.apply(b, z, Teuchos::NO_TRANS, 2.0, -1.0);  // 2 x - x
   z.update(-1.0, x, 1.0);
   EXPECT_LT(z.normInf(), 1e-13);
+  M.apply(b, z, Teuchos::NO_TRANS, 3.0, 0.0);  // 3 x
+  z.update(-3.0, x, 1.0);
+  EXPECT_LT(z.normInf(), 3e-13);
 }
 
 // A zero row makes the block singular: a NumericalError naming the unknown, not a crash.
