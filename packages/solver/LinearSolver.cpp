@@ -130,6 +130,8 @@ Teuchos::ParameterList defaultLinearSolverParameters(OperatorKind kind, int dim,
     case OperatorKind::small:
       belos(p, "Pseudo Block GMRES").set("Num Blocks", 200);
       ilut(p);
+      if (dim == 1)
+        p.set("Preconditioner Type", "Banded LU");
       break;
     case OperatorKind::stiffness:
       belos(p, "Pseudo Block GMRES").set("Num Blocks", 200);

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Benchmark: Newton-Krylov on N1 (nonlinear static bar, cubic law) as the particle count
-grows, with Ifpack2's ILUT against MueLu as the preconditioner of GMRES.
+grows, with the 1-D default (the banded LU) against Ifpack2's ILUT (the default before) and
+MueLu as the preconditioner of GMRES.
 
 For each particle count (2 per cell, cpdi, one load step) records the Newton iterations,
 the Belos iterations summed over the Newton steps, the Newton solve time (Teuchos timer)
@@ -25,7 +26,8 @@ DECK = os.path.join(ROOT, "input", "bar_nonlinear_static.xml")
 
 MUELU = "Solver/Linear Solver/Preconditioner Types/MueLu/"
 PRECONDITIONERS = {
-    "ILUT": [],
+    "banded LU": [],
+    "ILUT": ["Solver/Linear Solver/Preconditioner Type=Ifpack2"],
     "MueLu": ["Solver/Linear Solver/Preconditioner Type=MueLu",
               MUELU + "verbosity=none",
               MUELU + "multigrid algorithm=unsmoothed",

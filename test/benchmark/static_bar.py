@@ -17,11 +17,14 @@ from benchlib import ROOT, exponent, median_run, run_impm, write_section
 
 DECK = os.path.join(ROOT, "input", "bar_static_s1.xml")
 
-# GMRES with the two incomplete factorisations that handle the zero diagonal of the Robin
-# rows (MueLu's relaxation smoothers divide by it; see doc/performance.md).
+# GMRES with the 1-D default (the banded LU, whose row exchanges handle the zero diagonal of
+# the Robin rows) and the two incomplete factorisations that handle it too (MueLu's
+# relaxation smoothers divide by it; see doc/performance.md).
 PRECONDITIONERS = {
-    "ILUT": [],
-    "RILUK(1)": ["Solver/Linear Solver/Preconditioner Types/Ifpack2/Prec Type=RILUK",
+    "banded LU": [],
+    "ILUT": ["Solver/Linear Solver/Preconditioner Type=Ifpack2"],
+    "RILUK(1)": ["Solver/Linear Solver/Preconditioner Type=Ifpack2",
+                 "Solver/Linear Solver/Preconditioner Types/Ifpack2/Prec Type=RILUK",
                  "Solver/Linear Solver/Preconditioner Types/Ifpack2/Ifpack2 Settings/"
                  "fact: iluk level-of-fill=1"],
 }

@@ -272,8 +272,18 @@ void expectSolves(const Teuchos::ParameterList& deck) {
   expectSolvesFull(mergedLinearSolverParameters(deck, OperatorKind::small, 1, comm->getSize()));
 }
 
-TEST(LinearSolver, DefaultGmresWithIlut) {
+// Small systems: GMRES with the banded LU in 1-D (its matrices are banded: exact on one
+// rank), with ILUT on small 2-D grids (whose band would be as wide as the grid).
+TEST(LinearSolver, SmallSystemDefaults) {
   expectSolves(Teuchos::ParameterList());
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  const auto oneD = defaultLinearSolverParameters(OperatorKind::small, 1, comm->getSize());
+  const auto twoD = defaultLinearSolverParameters(OperatorKind::small, 2, comm->getSize());
+  EXPECT_EQ(oneD.get<std::string>("Preconditioner Type"), "Banded LU");
+  EXPECT_EQ(twoD.get<std::string>("Preconditioner Type"), "Ifpack2");
+  EXPECT_EQ(twoD.sublist("Preconditioner Types").sublist("Ifpack2").get<std::string>("Prec Type"),
+            "ILUT");
+  expectSolvesFull(twoD);
 }
 
 // The defaults of the other operator kinds (MueLu with one unknown per node here, CG with
@@ -516,12 +526,15 @@ namespace {
 // diagonal block and 2 extras coupled to a few of them (as Robin ends are), spread over the
 // ranks: x must solve J x = b to round-off.
 // A kept preconditioner stays while the next unknowns are its own (to be reused), and goes,
-// with its hold on the matrix it was built from, as soon as they differ.
+// with its hold on the matrix it was built from, as soon as they differ.  Ifpack2's ILUT
+// holds its matrix (the banded LU, the 1-D default, copies it into its band).
 TEST(PreconditionerReuse, ReleasedWhenTheUnknownsChange) {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   auto A = laplacian(comm, 200);
+  Teuchos::ParameterList ilut;
+  ilut.set("Preconditioner Type", "Ifpack2");
   auto lows = createLinearSolveStrategy(
-      mergedLinearSolverParameters({}, OperatorKind::small, 1, comm->getSize()), comm, "test");
+      mergedLinearSolverParameters(ilut, OperatorKind::small, 1, comm->getSize()), comm, "test");
   ReusingPreconditionerFactory reuse(lows->getPreconditionerFactory(), false, ReuseRules{});
   auto prec = reuse.createPrec();
   reuse.initializePrec(Thyra::defaultLinearOpSource(thyraOperator(A)), prec.get(),
