@@ -1,9 +1,13 @@
 #include "solver/BandedLU.hpp"
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_LAPACK.hpp>
+#include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <Thyra_DefaultPreconditioner.hpp>
 #include <Thyra_TpetraLinearOp.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
+
+#include <limits>
 
 #include "core/Errors.hpp"
 
@@ -12,6 +16,7 @@ namespace impm {
 namespace {
 
 constexpr LO kNoRow = -1;
+constexpr const char* kAcrossRanks = "Across Ranks";
 
 // For each local column of A, the local row of the same unknown on this rank, or kNoRow (a
 // column of another rank's unknown: block Jacobi leaves it out).  A column map that begins
@@ -41,7 +46,7 @@ Teuchos::RCP<const CrsMatrix> matrixOf(const Thyra::LinearOpSourceBase<double>& 
 
 }  // namespace
 
-BandedLU::BandedLU(const CrsMatrix& A)
+BandedLU::BandedLU(const CrsMatrix& A, bool acrossRanks)
     : domain_(A.getDomainMap()),
       range_(A.getRangeMap()),
       n_(static_cast<int>(A.getRowMap()->getNodeNumElements())) {
@@ -66,12 +71,23 @@ BandedLU::BandedLU(const CrsMatrix& A)
   if (n_ > 0)
     Teuchos::LAPACK<int, double>().GBTRF(n_, n_, kl_, ku_, band_.data(), ldab, pivots_.data(),
                                          &info);
-  if (info > 0)
-    throw NumericalError("the banded LU of rank " + std::to_string(A.getComm()->getRank()) +
-                         "'s rows is singular: zero pivot at unknown " +
-                         std::to_string(A.getRowMap()->getGlobalElement(info - 1)));
   if (info < 0)
     throw std::logic_error("dgbtrf: argument " + std::to_string(-info) + " is invalid");
+  // Every rank learns of a singular block (the lowest zero pivot's unknown), so that none
+  // waits in a collective call for the ones that throw.
+  const GO none = std::numeric_limits<GO>::max();
+  GO zeroPivot = none;
+  Teuchos::reduceAll<int, GO>(*A.getComm(), Teuchos::REDUCE_MIN,
+                              info > 0 ? A.getRowMap()->getGlobalElement(info - 1) : none,
+                              Teuchos::outArg(zeroPivot));
+  if (zeroPivot != none)
+    throw NumericalError(
+        "the banded LU of the matrix's diagonal blocks is singular: zero pivot "
+        "at unknown " +
+        std::to_string(zeroPivot));
+  if (acrossRanks && A.getComm()->getSize() > 1)
+    coupling_ = std::make_unique<RankCoupling>(
+        A, rowOf, [this](double* B, int nrhs) { solveBlock(B, nrhs); });
 }
 
 void BandedLU::apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode, double alpha,
@@ -93,15 +109,18 @@ void BandedLU::apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode
 }
 
 void BandedLU::solveInPlace(MultiVector& B) const {
-  const int ldab = 2 * kl_ + ku_ + 1;
-  for (std::size_t v = 0; v < B.getNumVectors() && n_ > 0; ++v) {
-    auto b = B.getDataNonConst(v);
-    int info = 0;
-    Teuchos::LAPACK<int, double>().GBTRS('N', n_, kl_, ku_, 1, band_.data(), ldab, pivots_.data(),
-                                         b.getRawPtr(), n_, &info);
-    if (info != 0)
-      throw std::logic_error("dgbtrs: argument " + std::to_string(-info) + " is invalid");
-  }
+  for (std::size_t v = 0; v < B.getNumVectors() && n_ > 0; ++v)
+    solveBlock(B.getDataNonConst(v).getRawPtr(), 1);
+  if (coupling_)
+    coupling_->correct(B);
+}
+
+void BandedLU::solveBlock(double* B, int nrhs) const {
+  int info = 0;
+  Teuchos::LAPACK<int, double>().GBTRS('N', n_, kl_, ku_, nrhs, band_.data(), 2 * kl_ + ku_ + 1,
+                                       pivots_.data(), B, n_, &info);
+  if (info != 0)
+    throw std::logic_error("dgbtrs: argument " + std::to_string(-info) + " is invalid");
 }
 
 bool BandedLUFactory::isCompatible(const Thyra::LinearOpSourceBase<double>& fwdOpSrc) const {
@@ -119,7 +138,9 @@ void BandedLUFactory::initializePrec(
   auto* target = dynamic_cast<Thyra::DefaultPreconditioner<double>*>(prec);
   if (A.is_null() || !target)
     throw std::logic_error("Banded LU: the operator is not a Tpetra::CrsMatrix");
-  Teuchos::RCP<Tpetra::Operator<double, LO, GO, Node>> op = Teuchos::rcp(new BandedLU(*A));
+  const auto& list = list_.is_null() ? *getValidParameters() : *list_;
+  const bool exact = list.get<std::string>(kAcrossRanks) == "exact";
+  Teuchos::RCP<Tpetra::Operator<double, LO, GO, Node>> op = Teuchos::rcp(new BandedLU(*A, exact));
   target->initializeUnspecified(Thyra::createLinearOp(op));
 }
 
@@ -147,7 +168,16 @@ Teuchos::RCP<Teuchos::ParameterList> BandedLUFactory::unsetParameterList() {
 }
 
 Teuchos::RCP<const Teuchos::ParameterList> BandedLUFactory::getValidParameters() const {
-  static const auto valid = Teuchos::rcp(new Teuchos::ParameterList("Banded LU"));
+  static const auto valid = [] {
+    auto p = Teuchos::rcp(new Teuchos::ParameterList("Banded LU"));
+    Teuchos::setStringToIntegralParameter<int>(
+        kAcrossRanks, "exact",
+        "How the ranks' blocks couple on several ranks: \"exact\" restores the couplings (the "
+        "operator is the matrix's inverse on any number of ranks), \"block Jacobi\" leaves "
+        "them out",
+        Teuchos::tuple<std::string>("exact", "block Jacobi"), p.get());
+    return p;
+  }();
   return valid;
 }
 

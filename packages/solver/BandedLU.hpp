@@ -1,8 +1,10 @@
 #pragma once
-// The exact LU of each rank's diagonal block of a banded matrix, by LAPACK (dgbtrf/dgbtrs
-// through Teuchos::LAPACK): block Jacobi with exact blocks on several ranks, a direct solve
-// on one.  The matrix of a column a few cells wide is banded (its rows couple nodes a few
-// cells apart), so the band holds all of its fill-in.
+// The exact LU of a banded matrix, by LAPACK (dgbtrf/dgbtrs through Teuchos::LAPACK) on
+// each rank's diagonal block.  On several ranks the couplings between the blocks are
+// restored exactly by a RankCoupling (solver/RankCoupling.hpp), so the operator is A^-1 on
+// any number of ranks; or, asked to, left out: block Jacobi.  The matrix of a column a few
+// cells wide is banded (its rows couple nodes a few cells apart), so the band holds all of
+// its fill-in.
 //
 // This is what Ifpack2's block relaxation with a "Banded" container computes; that one
 // copies the rows out through a row view per row (Kokkos reference counts and strided
@@ -10,38 +12,46 @@
 // (doc/performance.md).  Here the band is filled from the local CRS arrays in one pass.
 //
 // The Stratimikos preconditioner type "Banded LU" (createLinearSolveStrategy registers it);
-// it has no parameters.
+// its one parameter, "Across Ranks", is "exact" (the default) or "block Jacobi".
 
 #include <Thyra_PreconditionerFactoryBase.hpp>
 #include <Tpetra_Operator.hpp>
+#include <memory>
 
 #include "core/TpetraTypes.hpp"
+#include "solver/RankCoupling.hpp"
 
 namespace impm {
 
 class BandedLU : public Tpetra::Operator<double, LO, GO, Node> {
  public:
-  // Factorises the rows of A on this rank, restricted to its own columns.  Throws
-  // NumericalError when the block is singular (naming the first zero pivot's row).
-  explicit BandedLU(const CrsMatrix& A);
+  // Factorises the rows of A on this rank, restricted to its own columns, and with
+  // `acrossRanks` the coupling of the ranks' blocks.  Collective.  Throws NumericalError on
+  // every rank when a block is singular (naming the first zero pivot's unknown).
+  explicit BandedLU(const CrsMatrix& A, bool acrossRanks = true);
 
   Teuchos::RCP<const Map> getDomainMap() const override { return domain_; }
   Teuchos::RCP<const Map> getRangeMap() const override { return range_; }
-  // Y = alpha A_block^-1 X + beta Y.
+  // Y = alpha A^-1 X + beta Y (A_block^-1 without the coupling).  Collective.
   void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode = Teuchos::NO_TRANS,
              double alpha = 1.0, double beta = 0.0) const override;
 
   int lowerBandwidth() const { return kl_; }
   int upperBandwidth() const { return ku_; }
+  // The unknowns coupling the ranks' blocks (0 on one rank, or without the coupling).
+  int interfaceSize() const { return coupling_ ? coupling_->interfaceSize() : 0; }
 
  private:
-  // B = A_block^-1 B, column by column.
+  // B = A^-1 B (A_block^-1 B without the coupling).
   void solveInPlace(MultiVector& B) const;
+  // The nrhs columns of length n_ at B = A_block^-1 B.
+  void solveBlock(double* B, int nrhs) const;
 
   Teuchos::RCP<const Map> domain_, range_;
   int n_ = 0, kl_ = 0, ku_ = 0;
   std::vector<double> band_;  // LAPACK's band storage, 2 kl + ku + 1 rows per column
   std::vector<int> pivots_;
+  std::unique_ptr<RankCoupling> coupling_;
 };
 
 class BandedLUFactory : public Thyra::PreconditionerFactoryBase<double> {

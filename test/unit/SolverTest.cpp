@@ -249,7 +249,8 @@ Teuchos::RCP<const Thyra::LinearOpBase<double>> thyraOperator(const Teuchos::RCP
 }
 
 // Solves A x = 1 (A: the Laplacian of 200 unknowns unless given) with the full list.
-void expectSolvesFull(const Teuchos::ParameterList& params, Teuchos::RCP<CrsMatrix> A = {}) {
+// Returns the Krylov iterations.
+int expectSolvesFull(const Teuchos::ParameterList& params, Teuchos::RCP<CrsMatrix> A = {}) {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   if (A.is_null())
     A = laplacian(comm, 200);
@@ -264,6 +265,9 @@ void expectSolvesFull(const Teuchos::ParameterList& params, Teuchos::RCP<CrsMatr
   A->apply(*x, r);
   r.update(1.0, *b, -1.0);
   EXPECT_LT(r.norm2(), 1e-8 * b->norm2());
+  return status.extraParameters.is_null()
+             ? -1
+             : status.extraParameters->get<int>("Belos/Iteration Count", -1);
 }
 
 // The same for a deck's list over the small-system default.
@@ -374,8 +378,12 @@ TEST(LinearSolver, BandedLuOverTheIlutDefault) {
 // A non-symmetric banded matrix of n unknowns, two bands below the diagonal and one above
 // (row i: 4 at i, -1 at i - 1, -0.5 at i - 2, -2 at i + 1); with `withinRanks` only the
 // couplings between unknowns of the same rank.
-Teuchos::RCP<CrsMatrix> bandedMatrix(const Teuchos::RCP<const Comm>& comm, GO n, bool withinRanks) {
-  auto map = Teuchos::rcp(new Map(n, 0, comm));
+Teuchos::RCP<CrsMatrix> bandedMatrix(const Teuchos::RCP<const Comm>& comm, GO n, bool withinRanks,
+                                     bool lastRankEmpty = false) {
+  const int ranks = comm->getSize(), filled = lastRankEmpty && ranks > 1 ? ranks - 1 : ranks;
+  const int rank = comm->getRank();
+  const GO share = n / filled, own = rank >= filled ? 0 : share + (rank < n % filled ? 1 : 0);
+  auto map = Teuchos::rcp(new Map(n, static_cast<std::size_t>(own), 0, comm));
   auto A = Teuchos::rcp(new CrsMatrix(map, 4));
   for (std::size_t k = 0; k < map->getNodeNumElements(); ++k) {
     const GO i = map->getGlobalElement(k);
@@ -418,7 +426,38 @@ TEST(BandedLU, InvertsEachRanksRowsExactly) {
   EXPECT_LT(z.normInf(), 3e-13);
 }
 
-// A zero row makes the block singular: a NumericalError naming the unknown, not a crash.
+// Where the rows couple across ranks, the banded LU restores the couplings exactly: M (A x)
+// = x on any number of ranks, also with a rank that holds no rows.  Each rank boundary
+// adds kl + ku = 3 interface unknowns.  Without the coupling (block Jacobi) it is not the
+// inverse on several ranks.
+TEST(BandedLU, InvertsTheMatrixAcrossRanks) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  for (const bool lastRankEmpty : {false, true}) {
+    const auto A = bandedMatrix(comm, 101, false, lastRankEmpty);
+    const int boundaries = comm->getSize() - (lastRankEmpty && comm->getSize() > 1 ? 2 : 1);
+    const auto error = [&](bool acrossRanks, double alpha, double beta) {
+      const BandedLU M(*A, acrossRanks);
+      EXPECT_EQ(M.interfaceSize(), acrossRanks ? 3 * boundaries : 0);
+      Vector x(A->getRowMap()), b(A->getRowMap());
+      for (std::size_t k = 0; k < x.getLocalLength(); ++k)
+        x.replaceLocalValue(k, std::sin(1.0 + A->getRowMap()->getGlobalElement(k)));
+      A->apply(x, b);
+      Vector y(x, Teuchos::Copy);  // beta x, so that alpha + beta times x is expected
+      M.apply(b, y, Teuchos::NO_TRANS, alpha, beta);
+      y.update(-(alpha + beta), x, 1.0);
+      return y.normInf();
+    };
+    for (const auto& [alpha, beta] : {std::pair{1.0, 0.0}, {2.0, -1.0}, {3.0, 0.0}})
+      EXPECT_LT(error(true, alpha, beta), 1e-13 * (alpha + std::abs(beta)))
+          << "alpha " << alpha << " beta " << beta << " last rank empty " << lastRankEmpty;
+    if (boundaries > 0) {
+      EXPECT_GT(error(false, 1.0, 0.0), 1e-3);
+    }
+  }
+}
+
+// A zero row makes a block singular: a NumericalError naming the unknown on every rank (so
+// that none waits for the others in a collective call), not a crash.
 TEST(BandedLU, SingularRowsAreANumericalError) {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   auto map = Teuchos::rcp(new Map(GO(4 * comm->getSize()), 0, comm));
@@ -433,22 +472,29 @@ TEST(BandedLU, SingularRowsAreANumericalError) {
     BandedLU M(*A);
     FAIL() << "no error";
   } catch (const NumericalError& e) {
-    EXPECT_NE(std::string(e.what()).find("zero pivot at unknown " +
-                                         std::to_string(map->getGlobalElement(2))),
-              std::string::npos)
-        << e.what();
+    // every rank throws, naming the lowest zero pivot: rank 0's third unknown
+    EXPECT_NE(std::string(e.what()).find("zero pivot at unknown 2"), std::string::npos) << e.what();
   }
 }
 
-// Through Stratimikos as the deck's "Banded LU": exact on one rank, block Jacobi under
-// GMRES on several, where the rows couple across ranks.
+// Through Stratimikos as the deck's "Banded LU": exact on any number of ranks, so GMRES
+// needs one iteration where the rows couple across ranks; block Jacobi when asked.
 TEST(LinearSolver, BandedLuPreconditioner) {
   Teuchos::ParameterList p;
   p.set("Preconditioner Type", "Banded LU");
   expectSolves(p);
   auto comm = Teuchos::DefaultComm<int>::getComm();
-  expectSolvesFull(mergedLinearSolverParameters(p, OperatorKind::small, 1, comm->getSize()),
-                   bandedMatrix(comm, 200, false));
+  const auto coupled = bandedMatrix(comm, 200, false);
+  const auto merged = mergedLinearSolverParameters(p, OperatorKind::small, 1, comm->getSize());
+  EXPECT_EQ(expectSolvesFull(merged, coupled), 1);
+  auto blocks = merged;
+  blocks.sublist("Preconditioner Types").sublist("Banded LU").set("Across Ranks", "block Jacobi");
+  const int iterations = expectSolvesFull(blocks, coupled);
+  if (comm->getSize() > 1) {
+    EXPECT_GT(iterations, 1);
+  }
+  blocks.sublist("Preconditioner Types").sublist("Banded LU").set("Across Ranks", "nearly");
+  EXPECT_THROW(createLinearSolveStrategy(blocks, comm, "deck.xml"), InputError);
 }
 
 // The MueLu list of the 2-D symmetric default on `ranks` ranks, merged with a deck's list
