@@ -128,8 +128,6 @@ void DiagonalElimination::solve(const Vector& b, Vector& x) const {
   // dn = D^-1 (rn - sum_k B_k de_k) (D^-1 is 0 on the rows that are not nodal); the extras
   // take de.
   x.elementWiseMultiply(1.0, dinv_, b, 0.0);
-  if (touched_.empty())
-    return;
   auto xv = x.getLocalViewHost(Tpetra::Access::ReadWrite);
   auto dv = dinv_.getLocalViewHost(Tpetra::Access::ReadOnly);
   std::vector<double> rn(touched_.size());

@@ -600,7 +600,8 @@ TEST(PreconditionerReuse, ReleasedWhenTheUnknownsChange) {
 }
 
 // The column map lists each rank's own columns first (as the grid system's does: the
-// diagonal is read in place) or in reverse (Tpetra's diagonal copy).
+// diagonal is read in place) or in reverse (Tpetra's diagonal copy).  On 3 ranks the last
+// one holds the extras only, none of the nodal rows they couple to.
 void expectEliminationSolves(bool ownColumnsFirst) {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   const GO n = 8;  // 0..5 nodal, 6 and 7 extras
