@@ -278,8 +278,26 @@ def unloading(args):
     sys.exit(1 if failures else 0)
 
 
+def linear_iterations_differ(histories, within):
+    """The steps whose Krylov iteration count on more ranks differs from the first run's by
+    more than `within` (an exact preconditioner on any number of ranks), as messages."""
+    runs = list(histories.items())
+    base_np, base = runs[0]
+    failures = []
+    for np, history in runs[1:]:
+        a = [int(float(r["linear_iterations"])) for r in base]
+        b = [int(float(r["linear_iterations"])) for r in history]
+        worst = max((abs(x - y) for x, y in zip(a, b)), default=0)
+        print("%d ranks vs %d: linear iterations %d against %d over the run, at most %d apart "
+              "in a step" % (np, base_np, sum(b), sum(a), worst))
+        if len(a) != len(b) or worst > within:
+            failures.append("linear iterations on %d ranks differ from %d ranks' by %d in a step "
+                            "(allowed: %d)" % (np, base_np, worst, within))
+    return failures
+
+
 def ranks(args):
-    results, conserved_failures = {}, []
+    results, histories, conserved_failures = {}, {}, []
     for np in args.np:
         out = tempfile.mkdtemp(prefix="impm-np%d-" % np, dir=".")
         r = run_impm(args, args.deck, out, ["Solver/Print Iterations=false"] + args.set, np,
@@ -289,6 +307,7 @@ def ranks(args):
             sys.exit("impm failed on %d ranks" % np)
         results[np] = read_csv(os.path.join(out, stem(args.deck) + "_particles.csv"))
         history = read_csv(os.path.join(out, stem(args.deck) + "_history.csv"))
+        histories[np] = history
         shutil.rmtree(out)
         if np > 1 and args.expect_log:
             found = re.findall(args.expect_log, r.stdout)
@@ -307,6 +326,8 @@ def ranks(args):
     base_np = args.np[0]
     base = results[base_np]
     failures = conserved_failures
+    if args.linear_iterations_within is not None:
+        failures += linear_iterations_differ(histories, args.linear_iterations_within)
     columns = list(base[0].keys())
     for np in args.np[1:]:
         other = results[np]
@@ -604,6 +625,9 @@ def main():
                    "than one rank must match (the runs print every step)")
     r.add_argument("--conserved", nargs="+", default=[],
                    help="history columns that must stay constant to 1e-13 relative")
+    r.add_argument("--linear-iterations-within", type=int,
+                   help="every step's Krylov iterations on more ranks must be within this of "
+                        "the first run's (a preconditioner that is exact on any rank count)")
     r.add_argument("--set", action="append", default=[])
 
     f = sub.add_parser("fails")
