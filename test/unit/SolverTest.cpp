@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <numeric>
 
 #include <Teuchos_DefaultComm.hpp>
 #include <Thyra_LinearOpWithSolveFactoryHelpers.hpp>
@@ -474,6 +475,34 @@ TEST(BandedLU, SingularRowsAreANumericalError) {
   } catch (const NumericalError& e) {
     // every rank throws, naming the lowest zero pivot: rank 0's third unknown
     EXPECT_NE(std::string(e.what()).find("zero pivot at unknown 2"), std::string::npos) << e.what();
+  }
+}
+
+// A matrix can be singular while every rank's block is not: all ones, one row per rank.
+// The coupled banded LU then says so on every rank; block Jacobi (the identity here) builds.
+TEST(BandedLU, SingularCouplingIsANumericalError) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  const GO n = comm->getSize();
+  auto map = Teuchos::rcp(new Map(n, 0, comm));
+  auto A = Teuchos::rcp(new CrsMatrix(map, n));
+  for (std::size_t k = 0; k < map->getNodeNumElements(); ++k) {
+    std::vector<GO> cols(n);
+    std::iota(cols.begin(), cols.end(), GO(0));
+    A->insertGlobalValues(map->getGlobalElement(k), Teuchos::ArrayView<const GO>(cols),
+                          Teuchos::ArrayView<const double>(std::vector<double>(n, 1.0)));
+  }
+  A->fillComplete();
+  EXPECT_NO_THROW(BandedLU(*A, false));
+  if (n == 1) {
+    EXPECT_NO_THROW(BandedLU(*A, true));
+    return;
+  }
+  try {
+    BandedLU M(*A, true);
+    FAIL() << "no error";
+  } catch (const NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("coupling across ranks is singular"), std::string::npos)
+        << e.what();
   }
 }
 
