@@ -279,8 +279,9 @@ def unloading(args):
 
 
 def linear_iterations_differ(histories, within):
-    """The steps whose Krylov iteration count on more ranks differs from the first run's by
-    more than `within` (an exact preconditioner on any number of ranks), as messages."""
+    """A message for each rank count on which some step's Krylov iteration count differs
+    from the first run's by more than `within` (an exact preconditioner on any number of
+    ranks keeps them equal), or on which the steps are not the same."""
     runs = list(histories.items())
     base_np, base = runs[0]
     failures = []
