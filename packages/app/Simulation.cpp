@@ -492,7 +492,8 @@ std::vector<std::string> Simulation<Dim>::finish(double finalTime,
                 << " times\n";
     if (layouts.built() + layouts.reused() > 1)
       std::cout << "  graph: built " << layouts.built() << " times, reused " << layouts.reused()
-                << " times\n";
+                << " times (" << layouts.reusedRetiring()
+                << " of them with nodes that no particle reaches any more)\n";
     if (loadBalance_->repartitions() > 0)
       std::cout << "  load balance: the cells were repartitioned " << loadBalance_->repartitions()
                 << " times\n";

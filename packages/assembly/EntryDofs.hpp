@@ -36,10 +36,12 @@ Kokkos::View<LO*, Memory> nodeTable(const Map& overlap, GlobalId lowest, std::si
 // The overlap index of each entry's node is looked up in a table over the range of the
 // entries' node ids when that range is not much wider than the list of entries (a rank's
 // particles: one pass, where the map's hashed lookup per entry was a tenth of an explicit
-// gimp step), and in the map otherwise.
+// gimp step), and in the map otherwise.  A node missing from `overlap` is a logic_error,
+// unless `allFound` is given: it then tells whether every node was found.
 template <int Dim, class Space = DefaultExecSpace>
 Kokkos::View<LO*, typename Space::memory_space> entryDofs(const ParticleGridMap<Dim, Space>& map,
-                                                          const Map& overlap) {
+                                                          const Map& overlap,
+                                                          bool* allFound = nullptr) {
   using Memory = typename Space::memory_space;
   const std::size_t n = map.numEntries();
   Kokkos::View<LO*, Memory> lids(Kokkos::ViewAllocateWithoutInitializing("entry dofs"), n);
@@ -72,7 +74,9 @@ Kokkos::View<LO*, typename Space::memory_space> entryDofs(const ParticleGridMap<
             worst = 2;
       },
       Kokkos::Max<int>(bad));
-  if (bad == 1)
+  if (allFound)
+    *allFound = bad != 1;
+  if (bad == 1 && !allFound)
     throw std::logic_error("a particle's node is missing from the map of its unknowns");
   if (bad == 2)
     throw std::logic_error("node components are not consecutive in the DOF map");

@@ -41,6 +41,11 @@ class RowColumns {
 
   std::size_t numRows() const { return numRows_; }
 
+  // The node pairs, taken out when the rows are no longer needed.
+  NodeAdjacency releaseAdjacency() {
+    return NodeAdjacency{std::move(nodeStart_), std::move(nodeColumns_)};
+  }
+
   // Row r's columns, sorted and unique (valid until the next call).
   const std::vector<LO>& operator()(std::size_t r) {
     cols_.clear();
@@ -152,7 +157,7 @@ template <int Dim>
 Teuchos::RCP<FECrsGraph> buildGraph(const ParticleGridMap<Dim>& map,
                                     const Kokkos::View<LO*>& entryDofs, const DofMap<Dim>& dofs,
                                     const std::vector<std::pair<GO, GO>>& extraCouplings,
-                                    NodeCoupling coupling) {
+                                    NodeCoupling coupling, NodeAdjacency* adjacency) {
   const auto& overlap = *dofs.overlapMap();
   RowColumns<Dim> columns(map, entryDofs, overlap, extraCouplings, coupling);
   Kokkos::DualView<std::size_t*, FECrsGraph::device_type> counts("row counts", columns.numRows());
@@ -181,16 +186,24 @@ Teuchos::RCP<FECrsGraph> buildGraph(const ParticleGridMap<Dim>& map,
       graph->insertLocalIndices(static_cast<LO>(r), Teuchos::ArrayView<const LO>(local));
   }
   graph->endAssembly();
+  if (adjacency && coupling == NodeCoupling::shared)
+    *adjacency = columns.releaseAdjacency();
   return graph;
+}
+
+bool NodeAdjacency::couples(LO a, LO b) const {
+  const auto first = columns.begin() + static_cast<std::ptrdiff_t>(start[a]);
+  const auto last = columns.begin() + static_cast<std::ptrdiff_t>(start[a + 1]);
+  return std::binary_search(first, last, b);
 }
 
 template Teuchos::RCP<FECrsGraph> buildGraph<1>(const ParticleGridMap<1>&, const Kokkos::View<LO*>&,
                                                 const DofMap<1>&,
-                                                const std::vector<std::pair<GO, GO>>&,
-                                                NodeCoupling);
+                                                const std::vector<std::pair<GO, GO>>&, NodeCoupling,
+                                                NodeAdjacency*);
 template Teuchos::RCP<FECrsGraph> buildGraph<2>(const ParticleGridMap<2>&, const Kokkos::View<LO*>&,
                                                 const DofMap<2>&,
-                                                const std::vector<std::pair<GO, GO>>&,
-                                                NodeCoupling);
+                                                const std::vector<std::pair<GO, GO>>&, NodeCoupling,
+                                                NodeAdjacency*);
 
 }  // namespace impm

@@ -23,10 +23,23 @@ namespace impm {
 // it (the stiffness, the consistent mass), or itself alone (the lumped mass).
 enum class NodeCoupling { shared, self };
 
+// The node pairs of a graph built with shared coupling, by overlap index of the nodes'
+// first components: the nodes that node `a` couples with are columns[start[a] ...
+// start[a + 1]), sorted.  Kept with a layout, it tells whether a later map's node pairs all
+// have their entries in that graph (solver/SystemLayout.hpp).
+struct NodeAdjacency {
+  std::vector<std::size_t> start;
+  std::vector<LO> columns;
+
+  bool couples(LO a, LO b) const;
+};
+
+// `adjacency`: if not null, receives the node pairs (shared coupling only).
 template <int Dim>
 Teuchos::RCP<FECrsGraph> buildGraph(const ParticleGridMap<Dim>& map,
                                     const Kokkos::View<LO*>& entryDofs, const DofMap<Dim>& dofs,
                                     const std::vector<std::pair<GO, GO>>& extraCouplings,
-                                    NodeCoupling coupling = NodeCoupling::shared);
+                                    NodeCoupling coupling = NodeCoupling::shared,
+                                    NodeAdjacency* adjacency = nullptr);
 
 }  // namespace impm

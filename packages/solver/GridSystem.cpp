@@ -106,13 +106,19 @@ std::vector<std::pair<LO, double>> GridSystem<Dim>::constrainedRows() const {
     contributions_[c]->constraints(context(static_cast<int>(c)), global);
   for (GO padding : dofs_.paddingDofs())
     global.emplace_back(padding, 0.0);
+  // A retired node (solver/SystemLayout.hpp) is fixed at zero, also where a boundary
+  // condition holds it: a built layout would not have it at all.
+  const auto& retired = laidOut_.retired;
   std::vector<std::pair<LO, double>> rows;
   const auto& owned = *dofs_.ownedMap();
   for (const auto& [gid, value] : global) {
     const LO lid = owned.getLocalElement(gid);
-    if (lid != Teuchos::OrdinalTraits<LO>::invalid())
+    if (lid != Teuchos::OrdinalTraits<LO>::invalid() &&
+        !std::binary_search(retired.begin(), retired.end(), lid))
       rows.emplace_back(lid, value);
   }
+  for (const LO lid : retired)
+    rows.emplace_back(lid, 0.0);
   return rows;
 }
 

@@ -162,7 +162,8 @@ class GridSystem : public ResidualModel {
   void stressAtStepStart();
   // The diagonal of a prescribed row, made on first use.  Collective.
   double constraintScale() const;
-  // Owned local index and prescribed increment of every constrained unknown.
+  // Owned local index and prescribed increment of every constrained unknown: the
+  // contributions' and the padding's, and the retired nodes' (solver/SystemLayout.hpp).
   std::vector<std::pair<LO, double>> constrainedRows() const;
   // Whether a rank has a prescribed unknown, given whether this one has (`mine`).  Asked
   // once: the prescribed unknowns (the contributions' constrained nodes and the padding, see

@@ -20,7 +20,9 @@ QuasiStaticStepper<Dim>::QuasiStaticStepper(const Teuchos::ParameterList& params
     : Stepper<Dim>(std::move(setup), 1.0 / params.get<int>("Load Steps"),
                    params.get<double>("Minimum Load Increment")),
       time_(params.get<double>("Final Time")),
-      loadPath_(formulaText(params, "Load Path"), {"s"}) {}
+      loadPath_(formulaText(params, "Load Path"), {"s"}) {
+  this->retireNodes_ = true;  // no inertia: a node the particles left holds nothing
+}
 
 template <int Dim>
 void QuasiStaticStepper<Dim>::run(const StepCallback<Dim>& onStep) {

@@ -24,10 +24,12 @@ Stepper<Dim>::Stepper(StepperSetup<Dim> setup, double nominal, double minimum)
       layouts_(setup_.reuseLayout) {
   layouts_.setOnNewUnknowns(
       [newton = &setup_.newton](const Map& next) { newton->releasePreconditionerUnlessFor(next); });
+  layouts_.setOnRetiredNodes([newton = &setup_.newton] { newton->forgetPreconditioner(); });
 }
 
 template <int Dim>
 Teuchos::RCP<GridSystem<Dim>> Stepper<Dim>::buildSystem(double time, double loadFactor) {
+  layouts_.allowRetiredNodes(retireNodes_);
   return Teuchos::rcp(new GridSystem<Dim>(setup_.ownership, setup_.method, setup_.kinematics,
                                           setup_.particles, setup_.materials, setup_.contributions,
                                           time, loadFactor, &workspace_, &layouts_, nodeCoupling_));

@@ -37,7 +37,7 @@ class Stepper {
   // of a fixed grid): what a checkpoint writes.
   virtual StepperState checkpointState() const { return accepted_; }
   void restore(const StepperState& state) { state_ = accepted_ = state; }
-  // How often a step's unknowns and graph were built and reused.
+  // How often a step's unknowns and graph were built and reused (with retired nodes).
   const LayoutCache<Dim>& layouts() const { return layouts_; }
 
  protected:
@@ -74,6 +74,9 @@ class Stepper {
   // The graph's node pairs: a stepper whose Jacobians are all diagonal in the nodes (an
   // explicit one) asks for NodeCoupling::self.
   NodeCoupling nodeCoupling_ = NodeCoupling::shared;
+  // Whether a step may keep a layout whose nodes the particles partly left (static steps:
+  // solver/SystemLayout.hpp).
+  bool retireNodes_ = false;
   StepperState state_;     // as the step under way changes it
   StepperState accepted_;  // at the last accepted step
   std::ostream* log_;      // rank 0: the progress log; elsewhere null

@@ -1,5 +1,7 @@
 #include "solver/SystemLayout.hpp"
 
+#include <algorithm>
+
 #include <Teuchos_CommHelpers.hpp>
 
 #include "assembly/EntryDofs.hpp"
@@ -118,11 +120,90 @@ std::shared_ptr<SystemLayout<Dim>> numberUnknowns(const NodeOwnership<Dim>& owne
 }  // namespace
 
 template <int Dim>
-std::shared_ptr<const SystemLayout<Dim>> LayoutCache<Dim>::find(const LayoutKey<Dim>& key,
-                                                                const Comm& comm) const {
-  if (!enabled_ || !onEveryRank(layout_ && key == key_, comm))
-    return nullptr;
-  return layout_;
+std::optional<LaidOut<Dim>> LayoutCache<Dim>::reusable(const LayoutKey<Dim>& key,
+                                                       const ParticleGridMap<Dim>& map,
+                                                       const Comm& comm) const {
+  if (!enabled_)
+    return std::nullopt;
+  if (!onEveryRank(layout_ && key == key_, comm))
+    return covering(key, map, comm);
+  LaidOut<Dim> kept{layout_, entries_, retired_, anyRetired_};
+  if (key.coupling == NodeCoupling::self)  // the same nodes, other entries
+    collectively(comm, [&] { kept.entryDofs = impm::entryDofs(map, *layout_->dofs.overlapMap()); });
+  return kept;
+}
+
+template <int Dim>
+std::optional<LaidOut<Dim>> LayoutCache<Dim>::covering(const LayoutKey<Dim>& key,
+                                                       const ParticleGridMap<Dim>& map,
+                                                       const Comm& comm) const {
+  const bool comparable =
+      allowRetired_ && layout_ && key.coupling == NodeCoupling::shared &&
+      key_.coupling == NodeCoupling::shared && key.ownership == key_.ownership &&
+      key.ownershipRevision == key_.ownershipRevision && key.extraNodes == key_.extraNodes;
+  if (!onEveryRank(comparable, comm))
+    return std::nullopt;
+  const Map& overlap = *layout_->dofs.overlapMap();
+  bool found = false;
+  EntryDofs<> entries;
+  collectively(comm, [&] { entries = impm::entryDofs(map, overlap, &found); });
+  if (!onEveryRank(found && pairsCovered(key, entries), comm))
+    return std::nullopt;
+  // Mark the nodes the map touches and bring the marks to their owners: the owned nodal
+  // rows left unmarked are the retired ones.
+  Vector marks(layout_->dofs.overlapMap());
+  {
+    auto m = marks.getLocalViewHost(Tpetra::Access::ReadWrite);
+    auto lids = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), entries);
+    for (std::size_t k = 0; k < lids.extent(0); ++k)
+      for (int d = 0; d < Dim; ++d)
+        m(lids(k) + d, 0) = 1.0;
+  }
+  Vector owned(layout_->dofs.ownedMap());
+  owned.doExport(marks, *layout_->importer, Tpetra::ADD);
+  LaidOut<Dim> out{layout_, entries, {}, false};
+  {
+    auto values = owned.getLocalViewHost(Tpetra::Access::ReadOnly);
+    const auto& rows = *layout_->dofs.ownedMap();
+    for (LO r = 0; r < static_cast<LO>(values.extent(0)); ++r)
+      if (values(r, 0) == 0.0 && !layout_->dofs.isExtraDof(rows.getGlobalElement(r)))
+        out.retired.push_back(r);
+  }
+  out.anyRetired = !onEveryRank(out.retired.empty(), comm);
+  out.retiredChanged = !onEveryRank(out.retired == retired_, comm);
+  return out;
+}
+
+template <int Dim>
+bool LayoutCache<Dim>::pairsCovered(const LayoutKey<Dim>& key, const EntryDofs<>& entries) const {
+  auto lid = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), entries);
+  const std::size_t mapped = key.rowPtr.empty() ? 0 : key.rowPtr.back();
+  // The contributions' nodes (after the map's in the key) must be integrated here.
+  std::vector<char> integrated(layout_->dofs.overlapMap()->getNodeNumElements(), 0);
+  for (std::size_t k = 0; k < mapped; ++k)
+    integrated[lid(k)] = 1;
+  const auto& overlap = *layout_->dofs.overlapMap();
+  for (std::size_t k = mapped; k < key.touched.size(); ++k) {
+    const LO node = overlap.getLocalElement(layout_->dofs.nodeDof(key.touched[k], 0));
+    if (node == Teuchos::OrdinalTraits<LO>::invalid() || !integrated[node])
+      return false;
+  }
+  // A particle that touches the nodes it touched in the kept key adds no pair; the kept
+  // key's pairs are in the graph (it was built from them, or covered them).
+  const bool sameParticles = key.rowPtr.size() == key_.rowPtr.size();
+  const auto& adjacency = layout_->adjacency;
+  for (std::size_t p = 0; p + 1 < key.rowPtr.size(); ++p) {
+    const std::size_t first = key.rowPtr[p], last = key.rowPtr[p + 1];
+    if (sameParticles && last - first == key_.rowPtr[p + 1] - key_.rowPtr[p] &&
+        std::equal(key.touched.begin() + first, key.touched.begin() + last,
+                   key_.touched.begin() + key_.rowPtr[p]))
+      continue;
+    for (std::size_t i = first; i < last; ++i)
+      for (std::size_t j = first; j < last; ++j)
+        if (!adjacency.couples(lid(i), lid(j)))
+          return false;
+  }
+  return true;
 }
 
 template <int Dim>
@@ -140,12 +221,20 @@ void LayoutCache<Dim>::newUnknowns(const Map& owned) {
 }
 
 template <int Dim>
-void LayoutCache<Dim>::keep(LayoutKey<Dim> key, std::shared_ptr<const SystemLayout<Dim>> layout) {
-  ++(layout == layout_ ? reused_ : built_);
+void LayoutCache<Dim>::keep(LayoutKey<Dim> key, const LaidOut<Dim>& laidOut) {
+  const bool same = laidOut.layout == layout_;
+  ++(same ? reused_ : built_);
+  if (same && laidOut.anyRetired)
+    ++reusedRetiring_;
+  if (laidOut.retiredChanged && onRetiredNodes_)
+    onRetiredNodes_();
   if (!enabled_)
     return;
   key_ = std::move(key);
-  layout_ = std::move(layout);
+  layout_ = laidOut.layout;
+  entries_ = laidOut.entryDofs;
+  retired_ = laidOut.retired;
+  anyRetired_ = laidOut.anyRetired;
 }
 
 template <int Dim>
@@ -154,41 +243,46 @@ LaidOut<Dim> layoutOf(const LayoutInputs<Dim>& in, LayoutCache<Dim>& cache) {
   std::vector<int> firstExtra;
   std::vector<ExtraDof> extras;
   auto key = keyOf(in.ownership, in.map, in.contributions, in.coupling, firstExtra, extras);
-  auto kept = cache.find(key, comm);
+  auto kept = cache.reusable(key, in.map, comm);
   std::shared_ptr<SystemLayout<Dim>> fresh;
   if (!kept) {
     fresh = numberUnknowns(in.ownership, in.map, firstExtra, key.touched, extras, in.coupling);
     cache.newUnknowns(*fresh->dofs.ownedMap());
   }
-  const SystemLayout<Dim>& unknowns = fresh ? *fresh : *kept;
-  EntryDofs<> entries = unknowns.entryDofs;
-  if (kept && in.coupling == NodeCoupling::self)  // the same nodes, other entries
-    collectively(comm, [&] { entries = impm::entryDofs(in.map, *kept->dofs.overlapMap()); });
+  LaidOut<Dim> out = kept ? *kept : LaidOut<Dim>{fresh, fresh->entryDofs, {}, false};
+
+  const SystemLayout<Dim>& unknowns = *out.layout;
   // The contributions' couplings, read against these unknowns.
   std::vector<std::pair<GO, GO>> couplings;
   for (std::size_t c = 0; c < in.contributions.size(); ++c)
     in.contributions[c]->couplings(
-        ContributionContext<Dim>{in.ownership.grid(), in.particles, in.map, entries, unknowns.dofs,
-                                 in.time, in.loadFactor, unknowns.firstExtra[c]},
+        ContributionContext<Dim>{in.ownership.grid(), in.particles, in.map, out.entryDofs,
+                                 unknowns.dofs, in.time, in.loadFactor, unknowns.firstExtra[c]},
         couplings);
   for (GO padding : unknowns.dofs.paddingDofs())  // its row holds its diagonal only
     couplings.emplace_back(padding, padding);
   if (kept && cache.sameCouplings(couplings, comm)) {
-    cache.keep(std::move(key), kept);
-    return {kept, entries};
+    cache.keep(std::move(key), out);
+    return out;
   }
   if (!fresh) {
-    fresh = std::make_shared<SystemLayout<Dim>>(*kept);
-    fresh->entryDofs = entries;
+    fresh = std::make_shared<SystemLayout<Dim>>(*kept->layout);
+    fresh->entryDofs = out.entryDofs;
   }
   fresh->couplings = std::move(couplings);
   {
     IMPM_TIMER("graph");
-    fresh->graph =
-        buildGraph(in.map, fresh->entryDofs, fresh->dofs, fresh->couplings, fresh->coupling);
+    auto graphCouplings = fresh->couplings;  // and the retired rows' diagonals
+    for (LO row : out.retired) {
+      const GO dof = fresh->dofs.ownedMap()->getGlobalElement(row);
+      graphCouplings.emplace_back(dof, dof);
+    }
+    fresh->graph = buildGraph(in.map, fresh->entryDofs, fresh->dofs, graphCouplings,
+                              fresh->coupling, &fresh->adjacency);
   }
-  cache.keep(std::move(key), fresh);
-  return {fresh, entries};
+  out.layout = fresh;
+  cache.keep(std::move(key), out);
+  return out;
 }
 
 template class LayoutCache<1>;

@@ -18,9 +18,20 @@
 // on the (particle, node) pairs; the rest depends on the set of nodes the map touches.  The
 // key is then that set, and a kept layout serves with the entries' indices made anew (an
 // explicit MPM step whose particles moved within the same nodes' supports).
+// A static step may also take over a kept layout whose unknowns and graph cover the new
+// map (LayoutCache::allowRetiredNodes): every node the map and the contributions touch is
+// one of its unknowns and every node pair of the map has its entries in its graph.  The
+// nodes the map no longer touches are retired: their rows, which no particle sums into,
+// hold the prescribed-row diagonal and their increments are fixed at zero (GridSystem's
+// constrained rows), which is what leaving them out of the system gives.  A compressed body
+// leaves nodes at its ends every load step without ever reaching new ones, and its
+// particles cross nodes whose pairs its other particles already couple; such steps then
+// keep the unknowns, the graph and the preconditioner's structure.  The answers equal those
+// of a built layout to round-off (the zero rows and entries change the order of sums).
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -48,6 +59,7 @@ struct SystemLayout {
   std::vector<LO> extraRows;                 // the owned rows of extra unknowns
   std::vector<std::pair<GO, GO>> couplings;  // the contributions' and the padding's entries
   Teuchos::RCP<FECrsGraph> graph;
+  NodeAdjacency adjacency;  // the graph's node pairs (shared coupling)
 };
 
 // What the unknowns are built from (the first three items above), on this rank.
@@ -67,33 +79,70 @@ struct LayoutKey {
   }
 };
 
+// A system's layout and the overlap index of each entry of its map (the layout's own,
+// except for a kept layout with self coupling or with retired nodes, whose map has other
+// entries).
+template <int Dim>
+struct LaidOut {
+  std::shared_ptr<const SystemLayout<Dim>> layout;
+  EntryDofs<> entryDofs;
+  std::vector<LO> retired;      // owned rows of retired nodes (every component), ascending
+  bool anyRetired = false;      // on any rank
+  bool retiredChanged = false;  // on any rank, since the layout was last kept
+};
+
 template <int Dim>
 class LayoutCache {
  public:
   explicit LayoutCache(bool enabled = true) : enabled_(enabled) {}
 
-  // The kept layout if `key` is the kept one on every rank, else null.  Collective.
-  std::shared_ptr<const SystemLayout<Dim>> find(const LayoutKey<Dim>& key, const Comm& comm) const;
+  // The kept layout laid out for `map`, whose key is `key`: when `key` is the kept one on
+  // every rank, or when retired nodes are allowed and the kept layout covers the map (see
+  // above).  Collective.
+  std::optional<LaidOut<Dim>> reusable(const LayoutKey<Dim>& key, const ParticleGridMap<Dim>& map,
+                                       const Comm& comm) const;
   // True if `couplings` are the kept layout's on every rank.  Collective.
   bool sameCouplings(const std::vector<std::pair<GO, GO>>& couplings, const Comm& comm) const;
-  void keep(LayoutKey<Dim> key, std::shared_ptr<const SystemLayout<Dim>> layout);
+  void keep(LayoutKey<Dim> key, const LaidOut<Dim>& laidOut);
+  // Whether a kept layout may serve a map that touches fewer nodes (static steps: the
+  // retired nodes have no mass to divide by).
+  void allowRetiredNodes(bool allow) { allowRetired_ = allow; }
   // Told the owned unknowns of every newly numbered layout, before its graph is built (a
   // stepper frees the preconditioner that cannot serve them).
   void setOnNewUnknowns(std::function<void(const Map&)> f) { onNewUnknowns_ = std::move(f); }
   // New unknowns were numbered: the kept layout cannot serve them, so it goes before the
   // new graph is built, and the callback is told.  Collective.
   void newUnknowns(const Map& owned);
+  // Told when a kept layout retires other nodes than before: a preconditioner built while
+  // they were active unknowns, whose rows held the little stiffness of the particles about
+  // to leave them, is a poor one once they are fixed (GMRES took hundreds of iterations
+  // instead of 10 on a compressed column), so the stepper has it built anew.
+  void setOnRetiredNodes(std::function<void()> f) { onRetiredNodes_ = std::move(f); }
 
   bool enabled() const { return enabled_; }
   int built() const { return built_; }
   int reused() const { return reused_; }
+  // Of the reuses, those with retired nodes.
+  int reusedRetiring() const { return reusedRetiring_; }
 
  private:
+  // The kept layout if it covers `map` (key `key`), with the retired nodes.  Collective.
+  std::optional<LaidOut<Dim>> covering(const LayoutKey<Dim>& key, const ParticleGridMap<Dim>& map,
+                                       const Comm& comm) const;
+  // Whether every node pair of the particles whose nodes differ from the kept key's has its
+  // entries in the kept graph (local).
+  bool pairsCovered(const LayoutKey<Dim>& key, const EntryDofs<>& entries) const;
+
   bool enabled_;
+  bool allowRetired_ = false;
   LayoutKey<Dim> key_;
   std::shared_ptr<const SystemLayout<Dim>> layout_;
+  EntryDofs<> entries_;  // of the kept key's map (with retired nodes, not the layout's own)
+  std::vector<LO> retired_;
+  bool anyRetired_ = false;
   std::function<void(const Map&)> onNewUnknowns_;
-  int built_ = 0, reused_ = 0;
+  std::function<void()> onRetiredNodes_;
+  int built_ = 0, reused_ = 0, reusedRetiring_ = 0;
 };
 
 template <int Dim>
@@ -108,14 +157,6 @@ struct LayoutInputs {
   const Contributions<Dim>& contributions;
   double time, loadFactor;  // for the contributions' context
   NodeCoupling coupling;
-};
-
-// A system's layout and the overlap index of each entry of its map (the layout's own,
-// except for a kept layout with self coupling, whose map has other entries).
-template <int Dim>
-struct LaidOut {
-  std::shared_ptr<const SystemLayout<Dim>> layout;
-  EntryDofs<> entryDofs;
 };
 
 // The layout of the system on `in.map`: the cache's when nothing it depends on changed,

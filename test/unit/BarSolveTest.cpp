@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -25,36 +26,44 @@
 namespace impm {
 namespace {
 
-// Integration points of [0, 1] on this rank: two per cell, either Gauss points (fem) or
-// particle centres with their half-lengths.
-ParticleSet<1> barPoints(const NodeOwnership<1>& own, Method method, const Formula& load) {
-  const auto& g = own.grid();
-  const double h = g.spacing[0];
-  const int rank = own.comm()->getRank();
-  std::vector<double> x, w;
-  for (int c = 0; c < g.cells[0]; ++c) {
-    const double mid = (c + 0.5) * h;
-    if (own.decomposition().ownerOfPoint(&mid) != rank)
-      continue;
-    const double off = method == Method::fem ? h / (2 * std::sqrt(3.0)) : h / 4;
-    x.push_back(mid - off), x.push_back(mid + off), w.push_back(h / 2), w.push_back(h / 2);
-  }
-  ParticleSet<1> ps(x.size());
+// A bar's points, each {x, half-length, force}: volume twice the half-length, section 1,
+// undeformed.
+using BarPoint = std::array<double, 3>;
+ParticleSet<1> barPointSet(const std::vector<BarPoint>& points) {
+  ParticleSet<1> ps(points.size());
   auto X = Kokkos::create_mirror_view(ps.X);
   auto V = Kokkos::create_mirror_view(ps.volume);
   auto r = Kokkos::create_mirror_view(ps.domain);
   auto A = Kokkos::create_mirror_view(ps.section);
   auto F = Kokkos::create_mirror_view(ps.F);
   auto f = Kokkos::create_mirror_view(ps.force);
-  for (std::size_t p = 0; p < x.size(); ++p) {
-    X(p, 0) = x[p], V(p) = w[p], r(p, 0, 0) = w[p] / 2, A(p) = 1.0, F(p, 0, 0) = 1.0;
-    f(p, 0) = load(x[p]) * w[p];
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    X(p, 0) = points[p][0], r(p, 0, 0) = points[p][1], V(p) = 2 * points[p][1];
+    A(p) = 1.0, F(p, 0, 0) = 1.0, f(p, 0) = points[p][2];
   }
   Kokkos::deep_copy(ps.X, X), Kokkos::deep_copy(ps.x, X), Kokkos::deep_copy(ps.volume, V);
   Kokkos::deep_copy(ps.domain, r), Kokkos::deep_copy(ps.section, A), Kokkos::deep_copy(ps.F, F);
   Kokkos::deep_copy(ps.domain0, r), Kokkos::deep_copy(ps.volume0, V);
   Kokkos::deep_copy(ps.force, f);
   return ps;
+}
+
+// Integration points of [0, 1] on this rank: two per cell, either Gauss points (fem) or
+// particle centres with their half-lengths.
+ParticleSet<1> barPoints(const NodeOwnership<1>& own, Method method, const Formula& load) {
+  const auto& g = own.grid();
+  const double h = g.spacing[0];
+  const int rank = own.comm()->getRank();
+  std::vector<BarPoint> points;
+  for (int c = 0; c < g.cells[0]; ++c) {
+    const double mid = (c + 0.5) * h;
+    if (own.decomposition().ownerOfPoint(&mid) != rank)
+      continue;
+    const double off = method == Method::fem ? h / (2 * std::sqrt(3.0)) : h / 4;
+    for (const double x : {mid - off, mid + off})
+      points.push_back({x, h / 4, load(x) * h / 2});
+  }
+  return barPointSet(points);
 }
 
 // One linear material of modulus E(x) on every point, its variables declared and set.
@@ -106,6 +115,83 @@ TEST(BarSolve, PatchTestIsExact) {
     EXPECT_NEAR(dynamic_cast<RobinEnd&>(*bcs[1]).force(), 1.0, 1e-12) << methodName(method);
     EXPECT_LE(report.iterations(), 2) << methodName(method);
   }
+}
+
+// The points of `ps` for which keep(x, half-length) holds, with their half-lengths as set.
+ParticleSet<1> somePoints(const ParticleSet<1>& ps,
+                          const std::function<bool(double x, double& halfLength)>& keep) {
+  auto X = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.X);
+  auto r = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.domain);
+  auto f = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.force);
+  std::vector<BarPoint> kept;
+  for (std::size_t p = 0; p < ps.size(); ++p) {
+    double half = r(p, 0, 0);
+    if (keep(X(p, 0), half))
+      kept.push_back({X(p, 0), half, f(p, 0)});
+  }
+  return barPointSet(kept);
+}
+
+// A static step whose particles left nodes keeps the last layout with those nodes retired
+// (solver/SystemLayout.hpp): the same unknowns, the retired ones solved to zero and the
+// others to what a layout built for the step gives.  A particle that couples two nodes the
+// kept graph does not couple makes a new layout (its entries would otherwise be dropped).
+TEST(GridSystem, KeptLayoutRetiresLeftNodesAndRefusesNewPairs) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  NodeOwnership<1> own(makeGridGeometry<1>({0.0}, {1.0}, {8}), comm);
+  const double h = 1.0 / 8;
+  std::vector<std::shared_ptr<Contribution<1>>> bcs = {robin("left", 0, 1, 0, 0.0)};
+  Teuchos::ParameterList solverParams;
+  validateParameters(solverParams, NewtonSolver::validParameters());
+  NewtonSolver newton(solverParams, comm);
+  LayoutCache<1> layouts;
+  layouts.allowRetiredNodes(true);
+  const auto kinematics = Kinematics::updatedLagrangian;
+
+  auto all = barPoints(own, Method::gimp, Formula(1.0));  // inside their cells
+  auto allMaterials = linearMaterial(all, "1");
+  GridSystem<1> first(own, Method::gimp, kinematics, all, allMaterials, bcs, 1.0, 1.0, nullptr,
+                      &layouts);
+  ASSERT_EQ(layouts.built(), 1);
+
+  // The last cell's points gone: node 8 is left.
+  auto fewer = somePoints(all, [&](double x, double&) { return x < 7 * h; });
+  auto fewerMaterials = linearMaterial(fewer, "1");
+  auto kept = Teuchos::rcp(new GridSystem<1>(own, Method::gimp, kinematics, fewer, fewerMaterials,
+                                             bcs, 1.0, 1.0, nullptr, &layouts));
+  EXPECT_EQ(layouts.reused(), 1);
+  EXPECT_EQ(layouts.reusedRetiring(), 1);
+  EXPECT_TRUE(kept->unknownMap()->isSameAs(*first.unknownMap()));
+  auto built = Teuchos::rcp(
+      new GridSystem<1>(own, Method::gimp, kinematics, fewer, fewerMaterials, bcs, 1.0, 1.0));
+  EXPECT_EQ(built->unknownMap()->getGlobalNumElements() + 1,
+            kept->unknownMap()->getGlobalNumElements());
+  auto xKept = kept->initialGuess(), xBuilt = built->initialGuess();
+  ASSERT_TRUE(newton.solve(kept, *xKept).converged);
+  ASSERT_TRUE(newton.solve(built, *xBuilt).converged);
+  const auto& keptMap = *xKept->getMap();
+  auto uKept = xKept->getData(), uBuilt = xBuilt->getData();
+  for (decltype(uKept.size()) k = 0; k < uKept.size(); ++k) {
+    const GO dof = keptMap.getGlobalElement(static_cast<LO>(k));
+    const LO other = xBuilt->getMap()->getLocalElement(dof);
+    if (dof == 8) {  // node 8, retired
+      EXPECT_EQ(uKept[k], 0.0);
+    } else if (!kept->dofs().isExtraDof(dof)) {
+      EXPECT_NEAR(uKept[k], uBuilt[other], 1e-12 * std::abs(uBuilt[other])) << "dof " << dof;
+    }
+  }
+
+  // A point of cell 2 grown to span cells 1 to 3 couples nodes 1 and 3: a new layout.
+  auto wide = somePoints(fewer, [&](double x, double& half) {
+    if (x > 2 * h && x < 2.5 * h)
+      half = h;
+    return true;
+  });
+  auto wideMaterials = linearMaterial(wide, "1");
+  GridSystem<1> grown(own, Method::gimp, kinematics, wide, wideMaterials, bcs, 1.0, 1.0, nullptr,
+                      &layouts);
+  EXPECT_EQ(layouts.built(), 2);
+  EXPECT_EQ(layouts.reused(), 1);
 }
 
 // |J v - (R(x + e v) - R(x - e v)) / 2e| / |J v| at a random x of amplitude `amplitude` and a
