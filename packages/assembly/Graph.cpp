@@ -43,6 +43,7 @@ class RowColumns {
 
   // The node pairs, taken out when the rows are no longer needed.
   NodeAdjacency releaseAdjacency() {
+    nodeColumns_.shrink_to_fit();  // reserved for twice the map's entries
     return NodeAdjacency{std::move(nodeStart_), std::move(nodeColumns_)};
   }
 

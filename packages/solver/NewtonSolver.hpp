@@ -52,6 +52,12 @@ class NewtonSolver {
     if (!reuse_.is_null())
       reuse_->releaseUnlessFor(next, prec_.get());
   }
+  // Frees the kept preconditioner: the next solve builds its own (the unknowns are the same,
+  // but some are now fixed: solver/SystemLayout.hpp).
+  void releasePreconditioner() const {
+    if (!reuse_.is_null())
+      reuse_->release(prec_.get());
+  }
   // Preconditioners built and reused so far (zeros without a preconditioner).
   ReuseCounts preconditionerCounts() const {
     return reuse_.is_null() ? ReuseCounts{} : reuse_->counts();

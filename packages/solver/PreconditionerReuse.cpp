@@ -75,6 +75,10 @@ void ReusingPreconditionerFactory::releaseUnlessFor(const Map& next,
                                                     Thyra::PreconditionerBase<double>* prec) const {
   if (!map_.is_null() && next.isSameAs(*map_))
     return;
+  release(prec);
+}
+
+void ReusingPreconditionerFactory::release(Thyra::PreconditionerBase<double>* prec) const {
   startOver(prec);
   map_ = Teuchos::null;
 }

@@ -59,6 +59,8 @@ class ReusingPreconditionerFactory : public Thyra::PreconditionerFactoryBase<dou
   // was built for the unknowns `next`: one that cannot serve them would otherwise stay
   // alive while the next system is built.  Collective.
   void releaseUnlessFor(const Map& next, Thyra::PreconditionerBase<double>* prec) const;
+  // Frees `prec` whatever it was built for; the next request builds anew.
+  void release(Thyra::PreconditionerBase<double>* prec) const;
 
   bool isCompatible(const Thyra::LinearOpSourceBase<double>& fwdOpSrc) const override;
   Teuchos::RCP<Thyra::PreconditionerBase<double>> createPrec() const override;

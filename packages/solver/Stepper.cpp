@@ -24,7 +24,7 @@ Stepper<Dim>::Stepper(StepperSetup<Dim> setup, double nominal, double minimum)
       layouts_(setup_.reuseLayout) {
   layouts_.setOnNewUnknowns(
       [newton = &setup_.newton](const Map& next) { newton->releasePreconditionerUnlessFor(next); });
-  layouts_.setOnRetiredNodes([newton = &setup_.newton] { newton->forgetPreconditioner(); });
+  layouts_.setOnRetiredNodes([newton = &setup_.newton] { newton->releasePreconditioner(); });
 }
 
 template <int Dim>

@@ -15,6 +15,9 @@ namespace impm {
 
 namespace {
 
+// The largest share of a kept layout's unknowns that may be retired (see covering()).
+constexpr double kMaxRetiredShare = 0.05;
+
 bool onEveryRank(bool mine, const Comm& comm) {
   int local = mine ? 1 : 0, all = 0;
   Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, local, Teuchos::outArg(all));
@@ -56,21 +59,29 @@ LayoutKey<Dim> keyOf(const NodeOwnership<Dim>& ownership, const ParticleGridMap<
   return key;
 }
 
-// Nodes only a boundary condition reaches would have empty rows: mark the nodes the
-// integration points touch and bring the marks to the owners.  Collective.
+// On the owned rows: non-zero where an entry's node is, zero elsewhere (the marks brought
+// from the overlap rows to their owners).  Collective.
 template <int Dim>
-void checkEveryActiveNodeIsIntegrated(const GridGeometry<Dim>& grid, const SystemLayout<Dim>& l) {
-  const auto& dofs = l.dofs;
+Vector integratedRows(const DofMap<Dim>& dofs, const Import& importer, const EntryDofs<>& entries) {
   Vector marks(dofs.overlapMap());
   {
     auto local = marks.getLocalViewHost(Tpetra::Access::ReadWrite);
-    auto lids = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), l.entryDofs);
+    auto lids = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), entries);
     for (std::size_t k = 0; k < lids.extent(0); ++k)
       for (int d = 0; d < Dim; ++d)
         local(lids(k) + d, 0) = 1.0;
   }
   Vector owned(dofs.ownedMap());
-  owned.doExport(marks, Export(dofs.overlapMap(), dofs.ownedMap()), Tpetra::ADD);
+  owned.doExport(marks, importer, Tpetra::ADD);
+  return owned;
+}
+
+// Nodes only a boundary condition reaches would have empty rows.  Collective.
+template <int Dim>
+void checkEveryActiveNodeIsIntegrated(const GridGeometry<Dim>& grid, const SystemLayout<Dim>& l,
+                                      const EntryDofs<>& entries) {
+  const auto& dofs = l.dofs;
+  const Vector owned = integratedRows(dofs, *l.importer, entries);
   collectively(*dofs.ownedMap()->getComm(), [&] {
     auto values = owned.getData();
     const auto& map = *dofs.ownedMap();
@@ -89,17 +100,16 @@ void checkEveryActiveNodeIsIntegrated(const GridGeometry<Dim>& grid, const Syste
 
 // The unknowns, the entries' overlap indices, the importer and the mask.  Collective.
 template <int Dim>
-std::shared_ptr<SystemLayout<Dim>> numberUnknowns(const NodeOwnership<Dim>& ownership,
-                                                  const ParticleGridMap<Dim>& map,
-                                                  std::vector<int> firstExtra,
-                                                  std::vector<GlobalId> touched,
-                                                  const std::vector<ExtraDof>& extras,
-                                                  NodeCoupling coupling) {
+std::pair<std::shared_ptr<SystemLayout<Dim>>, EntryDofs<>> numberUnknowns(
+    const NodeOwnership<Dim>& ownership, const ParticleGridMap<Dim>& map,
+    std::vector<int> firstExtra, std::vector<GlobalId> touched, const std::vector<ExtraDof>& extras,
+    NodeCoupling coupling) {
   auto l = std::make_shared<SystemLayout<Dim>>(
       std::move(firstExtra), DofMap<Dim>(ownership, std::move(touched), extras), coupling);
   const auto& dofs = l->dofs;
   // A failure on one rank must stop every rank (the next steps are collective).
-  collectively(*ownership.comm(), [&] { l->entryDofs = impm::entryDofs(map, *dofs.overlapMap()); });
+  EntryDofs<> entries;
+  collectively(*ownership.comm(), [&] { entries = impm::entryDofs(map, *dofs.overlapMap()); });
   l->importer = Teuchos::rcp(new Import(dofs.ownedMap(), dofs.overlapMap()));
   auto mask = Teuchos::rcp(new Vector(dofs.ownedMap()));
   {
@@ -113,8 +123,8 @@ std::shared_ptr<SystemLayout<Dim>> numberUnknowns(const NodeOwnership<Dim>& owne
     }
   }
   l->nodalMask = mask;
-  checkEveryActiveNodeIsIntegrated(ownership.grid(), *l);
-  return l;
+  checkEveryActiveNodeIsIntegrated(ownership.grid(), *l, entries);
+  return {l, entries};
 }
 
 }  // namespace
@@ -122,11 +132,13 @@ std::shared_ptr<SystemLayout<Dim>> numberUnknowns(const NodeOwnership<Dim>& owne
 template <int Dim>
 std::optional<LaidOut<Dim>> LayoutCache<Dim>::reusable(const LayoutKey<Dim>& key,
                                                        const ParticleGridMap<Dim>& map,
-                                                       const Comm& comm) const {
+                                                       const Comm& comm) {
   if (!enabled_)
     return std::nullopt;
-  if (!onEveryRank(layout_ && key == key_, comm))
+  if (!onEveryRank(layout_ && key == key_, comm)) {
+    entries_ = EntryDofs<>();  // the kept key's: not held while the next ones are made
     return covering(key, map, comm);
+  }
   LaidOut<Dim> kept{layout_, entries_, retired_, anyRetired_};
   if (key.coupling == NodeCoupling::self)  // the same nodes, other entries
     collectively(comm, [&] { kept.entryDofs = impm::entryDofs(map, *layout_->dofs.overlapMap()); });
@@ -149,18 +161,8 @@ std::optional<LaidOut<Dim>> LayoutCache<Dim>::covering(const LayoutKey<Dim>& key
   collectively(comm, [&] { entries = impm::entryDofs(map, overlap, &found); });
   if (!onEveryRank(found && pairsCovered(key, entries), comm))
     return std::nullopt;
-  // Mark the nodes the map touches and bring the marks to their owners: the owned nodal
-  // rows left unmarked are the retired ones.
-  Vector marks(layout_->dofs.overlapMap());
-  {
-    auto m = marks.getLocalViewHost(Tpetra::Access::ReadWrite);
-    auto lids = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), entries);
-    for (std::size_t k = 0; k < lids.extent(0); ++k)
-      for (int d = 0; d < Dim; ++d)
-        m(lids(k) + d, 0) = 1.0;
-  }
-  Vector owned(layout_->dofs.ownedMap());
-  owned.doExport(marks, *layout_->importer, Tpetra::ADD);
+  // The owned nodal rows that no entry marks are the retired ones.
+  const Vector owned = integratedRows(layout_->dofs, *layout_->importer, entries);
   LaidOut<Dim> out{layout_, entries, {}, false};
   {
     auto values = owned.getLocalViewHost(Tpetra::Access::ReadOnly);
@@ -169,8 +171,17 @@ std::optional<LaidOut<Dim>> LayoutCache<Dim>::covering(const LayoutKey<Dim>& key
       if (values(r, 0) == 0.0 && !layout_->dofs.isExtraDof(rows.getGlobalElement(r)))
         out.retired.push_back(r);
   }
-  out.anyRetired = !onEveryRank(out.retired.empty(), comm);
-  out.retiredChanged = !onEveryRank(out.retired == retired_, comm);
+  // Retired rows still cost their share of every vector operation and factorisation: a
+  // column compressed to a third of its height would end with two thirds of its rows
+  // retired (the Hencky column took 8-14 % longer than with layouts built every step, and
+  // 10 % more memory).  Past a small share, a new layout costs less than keeping them.
+  const long long mine = static_cast<long long>(out.retired.size());
+  long long all = 0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, mine, Teuchos::outArg(all));
+  if (static_cast<double>(all) >
+      kMaxRetiredShare * layout_->dofs.ownedMap()->getGlobalNumElements())
+    return std::nullopt;
+  out.anyRetired = all > 0;
   return out;
 }
 
@@ -216,6 +227,9 @@ template <int Dim>
 void LayoutCache<Dim>::newUnknowns(const Map& owned) {
   key_ = LayoutKey<Dim>{};
   layout_.reset();
+  entries_ = EntryDofs<>();
+  retired_.clear();
+  anyRetired_ = false;
   if (onNewUnknowns_)
     onNewUnknowns_(owned);
 }
@@ -226,7 +240,7 @@ void LayoutCache<Dim>::keep(LayoutKey<Dim> key, const LaidOut<Dim>& laidOut) {
   ++(same ? reused_ : built_);
   if (same && laidOut.anyRetired)
     ++reusedRetiring_;
-  if (laidOut.retiredChanged && onRetiredNodes_)
+  if (laidOut.anyRetired && onRetiredNodes_)
     onRetiredNodes_();
   if (!enabled_)
     return;
@@ -245,11 +259,16 @@ LaidOut<Dim> layoutOf(const LayoutInputs<Dim>& in, LayoutCache<Dim>& cache) {
   auto key = keyOf(in.ownership, in.map, in.contributions, in.coupling, firstExtra, extras);
   auto kept = cache.reusable(key, in.map, comm);
   std::shared_ptr<SystemLayout<Dim>> fresh;
-  if (!kept) {
-    fresh = numberUnknowns(in.ownership, in.map, firstExtra, key.touched, extras, in.coupling);
-    cache.newUnknowns(*fresh->dofs.ownedMap());
+  LaidOut<Dim> out;
+  if (kept) {
+    out = *kept;
+  } else {
+    auto [layout, entries] =
+        numberUnknowns(in.ownership, in.map, firstExtra, key.touched, extras, in.coupling);
+    cache.newUnknowns(*layout->dofs.ownedMap());
+    fresh = layout;
+    out = LaidOut<Dim>{fresh, entries, {}, false};
   }
-  LaidOut<Dim> out = kept ? *kept : LaidOut<Dim>{fresh, fresh->entryDofs, {}, false};
 
   const SystemLayout<Dim>& unknowns = *out.layout;
   // The contributions' couplings, read against these unknowns.
@@ -265,10 +284,8 @@ LaidOut<Dim> layoutOf(const LayoutInputs<Dim>& in, LayoutCache<Dim>& cache) {
     cache.keep(std::move(key), out);
     return out;
   }
-  if (!fresh) {
+  if (!fresh)
     fresh = std::make_shared<SystemLayout<Dim>>(*kept->layout);
-    fresh->entryDofs = out.entryDofs;
-  }
   fresh->couplings = std::move(couplings);
   {
     IMPM_TIMER("graph");
@@ -277,8 +294,8 @@ LaidOut<Dim> layoutOf(const LayoutInputs<Dim>& in, LayoutCache<Dim>& cache) {
       const GO dof = fresh->dofs.ownedMap()->getGlobalElement(row);
       graphCouplings.emplace_back(dof, dof);
     }
-    fresh->graph = buildGraph(in.map, fresh->entryDofs, fresh->dofs, graphCouplings,
-                              fresh->coupling, &fresh->adjacency);
+    fresh->graph = buildGraph(in.map, out.entryDofs, fresh->dofs, graphCouplings, fresh->coupling,
+                              &fresh->adjacency);
   }
   out.layout = fresh;
   cache.keep(std::move(key), out);

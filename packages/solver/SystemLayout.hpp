@@ -1,7 +1,7 @@
 #pragma once
-// The layout of a step's grid system: the unknowns (DofMap), the overlap index of every
-// particle-grid map entry, the graph with the column index of every entry, the importer
-// from the owned to the overlap unknowns and the nodal mask.  In updated-Lagrangian runs
+// The layout of a step's grid system: the unknowns (DofMap), the graph, the importer from
+// the owned to the overlap unknowns and the nodal mask; beside it (LaidOut) the overlap
+// index of every particle-grid map entry, which is also its column.  In updated-Lagrangian runs
 // building them is most of a step's set-up, yet they depend only on
 //   - the (particle, node) pairs of the map (its rows and their nodes, in order),
 //   - the nodes and extra unknowns the contributions add (Contribution::prepare),
@@ -50,10 +50,6 @@ struct SystemLayout {
   std::vector<int> firstExtra;  // each contribution's first extra unknown
   DofMap<Dim> dofs;
   NodeCoupling coupling;  // the graph's
-  // The overlap-map index of each entry's node, for the map the layout was built on: with
-  // shared coupling every map of the same key has these, with self coupling each map has its
-  // own (LaidOut).
-  EntryDofs<> entryDofs;
   Teuchos::RCP<const Import> importer;
   Teuchos::RCP<const Vector> nodalMask;      // 1 on nodal unknowns, 0 on extra unknowns
   std::vector<LO> extraRows;                 // the owned rows of extra unknowns
@@ -79,16 +75,14 @@ struct LayoutKey {
   }
 };
 
-// A system's layout and the overlap index of each entry of its map (the layout's own,
-// except for a kept layout with self coupling or with retired nodes, whose map has other
-// entries).
+// A system's layout and the overlap index of each entry of its map (kept beside the layout:
+// a layout kept with self coupling or with retired nodes serves maps with other entries).
 template <int Dim>
 struct LaidOut {
   std::shared_ptr<const SystemLayout<Dim>> layout;
   EntryDofs<> entryDofs;
-  std::vector<LO> retired;      // owned rows of retired nodes (every component), ascending
-  bool anyRetired = false;      // on any rank
-  bool retiredChanged = false;  // on any rank, since the layout was last kept
+  std::vector<LO> retired;  // owned rows of retired nodes (every component), ascending
+  bool anyRetired = false;  // on any rank
 };
 
 template <int Dim>
@@ -100,7 +94,7 @@ class LayoutCache {
   // every rank, or when retired nodes are allowed and the kept layout covers the map (see
   // above).  Collective.
   std::optional<LaidOut<Dim>> reusable(const LayoutKey<Dim>& key, const ParticleGridMap<Dim>& map,
-                                       const Comm& comm) const;
+                                       const Comm& comm);
   // True if `couplings` are the kept layout's on every rank.  Collective.
   bool sameCouplings(const std::vector<std::pair<GO, GO>>& couplings, const Comm& comm) const;
   void keep(LayoutKey<Dim> key, const LaidOut<Dim>& laidOut);
@@ -113,10 +107,12 @@ class LayoutCache {
   // New unknowns were numbered: the kept layout cannot serve them, so it goes before the
   // new graph is built, and the callback is told.  Collective.
   void newUnknowns(const Map& owned);
-  // Told when a kept layout retires other nodes than before: a preconditioner built while
-  // they were active unknowns, whose rows held the little stiffness of the particles about
+  // Told when a kept layout serves with retired nodes, before the step's matrix is made:
+  // the stepper frees its preconditioner, as it does for new unknowns.  One built while the
+  // retired nodes were active, whose rows held the little stiffness of the particles about
   // to leave them, is a poor one once they are fixed (GMRES took hundreds of iterations
-  // instead of 10 on a compressed column), so the stepper has it built anew.
+  // instead of 10 on a compressed column); and one kept holds the last step's Jacobian
+  // while the next is made (10 % more peak memory on that column).
   void setOnRetiredNodes(std::function<void()> f) { onRetiredNodes_ = std::move(f); }
 
   bool enabled() const { return enabled_; }

@@ -135,11 +135,12 @@ ParticleSet<1> somePoints(const ParticleSet<1>& ps,
 // A static step whose particles left nodes keeps the last layout with those nodes retired
 // (solver/SystemLayout.hpp): the same unknowns, the retired ones solved to zero and the
 // others to what a layout built for the step gives.  A particle that couples two nodes the
-// kept graph does not couple makes a new layout (its entries would otherwise be dropped).
+// kept graph does not couple makes a new layout (its entries would otherwise be dropped),
+// and so does a retired share above 5 % of the unknowns.
 TEST(GridSystem, KeptLayoutRetiresLeftNodesAndRefusesNewPairs) {
   auto comm = Teuchos::DefaultComm<int>::getComm();
-  NodeOwnership<1> own(makeGridGeometry<1>({0.0}, {1.0}, {8}), comm);
-  const double h = 1.0 / 8;
+  NodeOwnership<1> own(makeGridGeometry<1>({0.0}, {1.0}, {32}), comm);
+  const double h = 1.0 / 32;
   std::vector<std::shared_ptr<Contribution<1>>> bcs = {robin("left", 0, 1, 0, 0.0)};
   Teuchos::ParameterList solverParams;
   validateParameters(solverParams, NewtonSolver::validParameters());
@@ -154,8 +155,8 @@ TEST(GridSystem, KeptLayoutRetiresLeftNodesAndRefusesNewPairs) {
                       &layouts);
   ASSERT_EQ(layouts.built(), 1);
 
-  // The last cell's points gone: node 8 is left.
-  auto fewer = somePoints(all, [&](double x, double&) { return x < 7 * h; });
+  // The last cell's points gone: node 32 is left (1 of 34 unknowns).
+  auto fewer = somePoints(all, [&](double x, double&) { return x < 31 * h; });
   auto fewerMaterials = linearMaterial(fewer, "1");
   auto kept = Teuchos::rcp(new GridSystem<1>(own, Method::gimp, kinematics, fewer, fewerMaterials,
                                              bcs, 1.0, 1.0, nullptr, &layouts));
@@ -174,7 +175,7 @@ TEST(GridSystem, KeptLayoutRetiresLeftNodesAndRefusesNewPairs) {
   for (decltype(uKept.size()) k = 0; k < uKept.size(); ++k) {
     const GO dof = keptMap.getGlobalElement(static_cast<LO>(k));
     const LO other = xBuilt->getMap()->getLocalElement(dof);
-    if (dof == 8) {  // node 8, retired
+    if (dof == 32) {  // node 32, retired
       EXPECT_EQ(uKept[k], 0.0);
     } else if (!kept->dofs().isExtraDof(dof)) {
       EXPECT_NEAR(uKept[k], uBuilt[other], 1e-12 * std::abs(uBuilt[other])) << "dof " << dof;
@@ -192,6 +193,21 @@ TEST(GridSystem, KeptLayoutRetiresLeftNodesAndRefusesNewPairs) {
                       &layouts);
   EXPECT_EQ(layouts.built(), 2);
   EXPECT_EQ(layouts.reused(), 1);
+
+  // On 8 cells the left node is 1 of 10 unknowns: more than a kept layout may retire.
+  NodeOwnership<1> coarse(makeGridGeometry<1>({0.0}, {1.0}, {8}), comm);
+  LayoutCache<1> coarseLayouts;
+  coarseLayouts.allowRetiredNodes(true);
+  auto coarseAll = barPoints(coarse, Method::gimp, Formula(1.0));
+  auto coarseAllMaterials = linearMaterial(coarseAll, "1");
+  GridSystem<1> coarseFirst(coarse, Method::gimp, kinematics, coarseAll, coarseAllMaterials, bcs,
+                            1.0, 1.0, nullptr, &coarseLayouts);
+  auto coarseFewer = somePoints(coarseAll, [](double x, double&) { return x < 7.0 / 8; });
+  auto coarseFewerMaterials = linearMaterial(coarseFewer, "1");
+  GridSystem<1> coarseNext(coarse, Method::gimp, kinematics, coarseFewer, coarseFewerMaterials, bcs,
+                           1.0, 1.0, nullptr, &coarseLayouts);
+  EXPECT_EQ(coarseLayouts.built(), 2);
+  EXPECT_EQ(coarseLayouts.reused(), 0);
 }
 
 // |J v - (R(x + e v) - R(x - e v)) / 2e| / |J v| at a random x of amplitude `amplitude` and a
