@@ -173,8 +173,8 @@ std::optional<LaidOut<Dim>> LayoutCache<Dim>::covering(const LayoutKey<Dim>& key
   }
   // Retired rows still cost their share of every vector operation and factorisation: a
   // column compressed to a third of its height would end with two thirds of its rows
-  // retired (the Hencky column took 8-14 % longer than with layouts built every step, and
-  // 10 % more memory).  Past a small share, a new layout costs less than keeping them.
+  // retired (the Hencky column took 8-14 % longer than with layouts built every step).
+  // Past a small share, a new layout costs less than keeping them.
   const long long mine = static_cast<long long>(out.retired.size());
   long long all = 0;
   Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, mine, Teuchos::outArg(all));
