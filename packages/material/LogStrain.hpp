@@ -108,6 +108,53 @@ KOKKOS_INLINE_FUNCTION PlaneSym<T> isotropicFunction(const PlaneSym<T>& B) {
   return {g0 + g1 * h, g0 - g1 * h, g1 * B.xy, Fn::f(B.zz)};
 }
 
+// phi(q) = atanh(x)/x and phi'(q), x = sqrt(q) in [0, 1): for ln, g1 = phi(r^2/m^2)/m.  By
+// their series sum q^k/(2k + 1) below q = 0.01 (ten terms: truncation below 1e-20), where
+// the closed form of phi' would cancel.
+KOKKOS_INLINE_FUNCTION void atanhRatio(double q, double& phi, double& dphi) {
+  if (q < 0.01) {
+    phi = dphi = 0.0;
+    for (int k = 9; k >= 0; --k) {  // Horner
+      phi = phi * q + 1.0 / (2 * k + 1);
+      dphi = dphi * q + (k + 1.0) / (2 * k + 3);
+    }
+    return;
+  }
+  const double x = Kokkos::Experimental::sqrt(q), t = Kokkos::Experimental::atanh(x);
+  phi = t / x;
+  dphi = (x / (1.0 - q) - t) / (2.0 * q * x);
+}
+
+// The derivative of ln B (B symmetric positive definite) along any dB.  On the in-plane
+// block ln B = g0 I + g1 (B - m I) with g0 = (1/2) ln det and g1 = phi(s/m^2)/m, functions
+// of the mean m and of s = r^2 (doc/theory.md); so
+//   d ln B = dg0 I + dg1 (B - m I) + g1 (dB - dm I),
+//   dg0 = (m dm - ds/2)/det,  dg1 = -dm/det + phi'(s/m^2) ds/m^3,
+// smooth where the eigenvalues coincide (no division by r).  The zz entry: dB_zz / B_zz.
+// What depends on B alone is computed once, for the four directions of a tangent.
+class LogarithmDerivative {
+ public:
+  KOKKOS_INLINE_FUNCTION explicit LogarithmDerivative(const PlaneSym<double>& B)
+      : B_(B), m_(0.5 * (B.xx + B.yy)), h_(0.5 * (B.xx - B.yy)) {
+    const double s = h_ * h_ + B.xy * B.xy;
+    double phi, dphi;
+    atanhRatio(s / (m_ * m_), phi, dphi);
+    g1_ = phi / m_, c_ = dphi / (m_ * m_ * m_);
+    inverseDet_ = 1.0 / (B.xx * B.yy - B.xy * B.xy);
+  }
+  KOKKOS_INLINE_FUNCTION PlaneSym<double> along(const PlaneSym<double>& dB) const {
+    const double dm = 0.5 * (dB.xx + dB.yy), dh = 0.5 * (dB.xx - dB.yy);
+    const double ds = 2.0 * (h_ * dh + B_.xy * dB.xy);
+    const double dg0 = (m_ * dm - 0.5 * ds) * inverseDet_, dg1 = c_ * ds - dm * inverseDet_;
+    return {dg0 + dg1 * h_ + g1_ * dh, dg0 - dg1 * h_ - g1_ * dh, dg1 * B_.xy + g1_ * dB.xy,
+            dB.zz / B_.zz};
+  }
+
+ private:
+  PlaneSym<double> B_;
+  double m_, h_, g1_ = 0, c_ = 0, inverseDet_ = 0;
+};
+
 // Hencky's law: tau = lambda tr(eps) I + 2 mu eps (isotropic, linear in the log strain).
 template <class T>
 KOKKOS_INLINE_FUNCTION PlaneSym<T> henckyStress(const PlaneSym<T>& eps, double mu, double lambda) {

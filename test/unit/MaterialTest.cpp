@@ -10,6 +10,7 @@
 
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
+#include "material/HenckyLaw.hpp"
 #include "material/MaterialFactory.hpp"
 #include "material/MaterialState.hpp"
 
@@ -328,6 +329,47 @@ TEST_P(EveryPlaneStrainLaw, TangentAndEnergyAreConsistentWithTheStress) {
         lambda * (a == b) * (c == d) + mu * ((a == c) * (b == d) + (a == d) * (b == c));
     EXPECT_NEAR(rest.A[0][k], expected, 1e-9) << GetParam() << " at F = I, entry " << k;
   }
+}
+
+// Hencky's written-out tangent against the dual-number derivative of the same evaluation,
+// where the two in-plane stretches are equal, close (either side of the ln series'
+// threshold r/m = 1e-5 and of the tangent's r/m = 0.1) and far apart.  The dual numbers
+// differentiate g1 = (ln(m + r) - ln(m - r))/(2r) through a quotient that cancels as r -> 0
+// (about 1e-16 (m/r)^2 relative), hence no point between 1e-5 and 1e-3.
+TEST(Hencky, TangentIsTheExactDerivativeOfTheStress) {
+  const Lame k{1000 / 2.6, 300 / (1.3 * 0.4)};
+  const auto rotation = [](double t, double R[2][2]) {
+    R[0][0] = std::cos(t), R[0][1] = -std::sin(t), R[1][0] = std::sin(t), R[1][1] = std::cos(t);
+  };
+  for (double rho : {0.0, 1e-7, 1e-3, 0.05, 0.099, 0.101, 0.3, 0.8})
+    for (double scale : {0.7, 1.3}) {
+      // F = R1 diag(s1, s2) R2: b's in-plane eigenvalues s1^2, s2^2 have r/m = rho.
+      const double s2 = scale, s1 = scale * std::sqrt((1 + rho) / (1 - rho));
+      double R1[2][2], R2[2][2], F[2][2];
+      rotation(0.4, R1), rotation(-1.1, R2);
+      for (int a = 0; a < 2; ++a)
+        for (int b = 0; b < 2; ++b)
+          F[a][b] = R1[a][0] * s1 * R2[0][b] + R1[a][1] * s2 * R2[1][b];
+      Dual4 Fd[2][2], Finv[2][2], Pd[2][2];
+      seedDeformation(F, Fd);
+      inverseOf(Fd, Fd[0][0] * Fd[1][1] - Fd[0][1] * Fd[1][0], Finv);
+      const PlaneSym<double> identity{1.0, 1.0, 0.0, 1.0};
+      const auto eps = scaled(isotropicFunction<Logarithm>(congruence(Fd, identity)), 0.5);
+      piolaOfKirchhoff(henckyStress(eps, k.mu, k.lambda), Finv, Pd);
+      double P[2][2], A[2][2][2][2];
+      unpackPiola(Pd, P, A);
+      const auto v = HenckyLaw::evaluate(F, k);
+      double largest = 0;
+      for (int i = 0; i < 16; ++i)
+        largest = std::max(largest, std::abs(A[i / 8][(i / 4) % 2][(i / 2) % 2][i % 2]));
+      for (int i = 0; i < 16; ++i) {
+        const int a = i / 8, b = (i / 4) % 2, c = (i / 2) % 2, d = i % 2;
+        EXPECT_NEAR(v.A[a][b][c][d], A[a][b][c][d], 1e-10 * largest)
+            << "r/m = " << rho << ", scale " << scale << ", entry " << i;
+      }
+      for (int i = 0; i < 4; ++i)
+        EXPECT_NEAR(v.P[i / 2][i % 2], P[i / 2][i % 2], 1e-13 * largest);
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Material, EveryPlaneStrainLaw,
