@@ -18,11 +18,10 @@ template <int Dim>
 QuasiStaticStepper<Dim>::QuasiStaticStepper(const Teuchos::ParameterList& params,
                                             StepperSetup<Dim> setup)
     : Stepper<Dim>(std::move(setup), 1.0 / params.get<int>("Load Steps"),
-                   params.get<double>("Minimum Load Increment")),
+                   params.get<double>("Minimum Load Increment"),
+                   true),  // no inertia: a node the particles left holds nothing
       time_(params.get<double>("Final Time")),
-      loadPath_(formulaText(params, "Load Path"), {"s"}) {
-  this->retireNodes_ = true;  // no inertia: a node the particles left holds nothing
-}
+      loadPath_(formulaText(params, "Load Path"), {"s"}) {}
 
 template <int Dim>
 void QuasiStaticStepper<Dim>::run(const StepCallback<Dim>& onStep) {

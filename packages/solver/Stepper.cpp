@@ -16,12 +16,12 @@
 namespace impm {
 
 template <int Dim>
-Stepper<Dim>::Stepper(StepperSetup<Dim> setup, double nominal, double minimum)
+Stepper<Dim>::Stepper(StepperSetup<Dim> setup, double nominal, double minimum, bool retireNodes)
     : setup_(std::move(setup)),
       log_(setup_.ownership.comm()->getRank() == 0 ? &std::cout : nullptr),
       nominal_(nominal),
       minimum_(minimum),
-      layouts_(setup_.reuseLayout) {
+      layouts_(setup_.reuseLayout, retireNodes) {
   layouts_.setOnNewUnknowns(
       [newton = &setup_.newton](const Map& next) { newton->releasePreconditionerUnlessFor(next); });
   layouts_.setOnRetiredNodes([newton = &setup_.newton] { newton->releasePreconditioner(); });
@@ -29,7 +29,6 @@ Stepper<Dim>::Stepper(StepperSetup<Dim> setup, double nominal, double minimum)
 
 template <int Dim>
 Teuchos::RCP<GridSystem<Dim>> Stepper<Dim>::buildSystem(double time, double loadFactor) {
-  layouts_.allowRetiredNodes(retireNodes_);
   return Teuchos::rcp(new GridSystem<Dim>(setup_.ownership, setup_.method, setup_.kinematics,
                                           setup_.particles, setup_.materials, setup_.contributions,
                                           time, loadFactor, &workspace_, &layouts_, nodeCoupling_));

@@ -22,7 +22,9 @@ template <int Dim>
 class Stepper {
  public:
   // nominal: the step size the deck asks for; minimum: the smallest a cutback may reach.
-  Stepper(StepperSetup<Dim> setup, double nominal, double minimum);
+  // `retireNodes`: whether a step may keep a layout whose nodes the particles partly left
+  // (static steps: solver/SystemLayout.hpp).
+  Stepper(StepperSetup<Dim> setup, double nominal, double minimum, bool retireNodes = false);
   virtual ~Stepper() = default;
 
   // Runs the steps left (all, or those after a restored state); calls onStep after each
@@ -74,9 +76,6 @@ class Stepper {
   // The graph's node pairs: a stepper whose Jacobians are all diagonal in the nodes (an
   // explicit one) asks for NodeCoupling::self.
   NodeCoupling nodeCoupling_ = NodeCoupling::shared;
-  // Whether a step may keep a layout whose nodes the particles partly left (static steps:
-  // solver/SystemLayout.hpp).
-  bool retireNodes_ = false;
   StepperState state_;     // as the step under way changes it
   StepperState accepted_;  // at the last accepted step
   std::ostream* log_;      // rank 0: the progress log; elsewhere null

@@ -19,7 +19,7 @@
 // key is then that set, and a kept layout serves with the entries' indices made anew (an
 // explicit MPM step whose particles moved within the same nodes' supports).
 // A static step may also take over a kept layout whose unknowns and graph cover the new
-// map (LayoutCache::allowRetiredNodes): every node the map and the contributions touch is
+// map (a LayoutCache made with allowRetired): every node the map and the contributions touch is
 // one of its unknowns and every node pair of the map has its entries in its graph.  The
 // nodes the map no longer touches are retired: their rows, which no particle sums into,
 // hold the prescribed-row diagonal and their increments are fixed at zero (GridSystem's
@@ -89,7 +89,10 @@ struct LaidOut {
 template <int Dim>
 class LayoutCache {
  public:
-  explicit LayoutCache(bool enabled = true) : enabled_(enabled) {}
+  // `allowRetired`: whether a kept layout may serve a map that touches fewer nodes (static
+  // steps: the retired nodes have no mass to divide by).
+  explicit LayoutCache(bool enabled = true, bool allowRetired = false)
+      : enabled_(enabled), allowRetired_(allowRetired) {}
 
   // The kept layout laid out for `map`, whose key is `key`: when `key` is the kept one on
   // every rank, or when retired nodes are allowed and the kept layout covers the map (see
@@ -99,9 +102,6 @@ class LayoutCache {
   // True if `couplings` are the kept layout's on every rank.  Collective.
   bool sameCouplings(const std::vector<std::pair<GO, GO>>& couplings, const Comm& comm) const;
   void keep(LayoutKey<Dim> key, const LaidOut<Dim>& laidOut);
-  // Whether a kept layout may serve a map that touches fewer nodes (static steps: the
-  // retired nodes have no mass to divide by).
-  void allowRetiredNodes(bool allow) { allowRetired_ = allow; }
   // Told the owned unknowns of every newly numbered layout, before its graph is built (a
   // stepper frees the preconditioner that cannot serve them).
   void setOnNewUnknowns(std::function<void(const Map&)> f) { onNewUnknowns_ = std::move(f); }

@@ -145,8 +145,7 @@ TEST(GridSystem, KeptLayoutRetiresLeftNodesAndRefusesNewPairs) {
   Teuchos::ParameterList solverParams;
   validateParameters(solverParams, NewtonSolver::validParameters());
   NewtonSolver newton(solverParams, comm);
-  LayoutCache<1> layouts;
-  layouts.allowRetiredNodes(true);
+  LayoutCache<1> layouts(true, true);  // retired nodes allowed
   const auto kinematics = Kinematics::updatedLagrangian;
 
   auto all = barPoints(own, Method::gimp, Formula(1.0));  // inside their cells
@@ -196,8 +195,7 @@ TEST(GridSystem, KeptLayoutRetiresLeftNodesAndRefusesNewPairs) {
 
   // On 8 cells the left node is 1 of 10 unknowns: more than a kept layout may retire.
   NodeOwnership<1> coarse(makeGridGeometry<1>({0.0}, {1.0}, {8}), comm);
-  LayoutCache<1> coarseLayouts;
-  coarseLayouts.allowRetiredNodes(true);
+  LayoutCache<1> coarseLayouts(true, true);
   auto coarseAll = barPoints(coarse, Method::gimp, Formula(1.0));
   auto coarseAllMaterials = linearMaterial(coarseAll, "1");
   GridSystem<1> coarseFirst(coarse, Method::gimp, kinematics, coarseAll, coarseAllMaterials, bcs,
