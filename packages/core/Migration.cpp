@@ -103,12 +103,20 @@ std::size_t migrateParticles(ParticleSet<Dim>& particles, const std::vector<int>
     View fresh = allocateField(spec.name, view, total);
     auto freshHost = Kokkos::create_mirror_view(fresh);
     const char* data = reinterpret_cast<const char*>(host.data());
-    char* out = reinterpret_cast<char*>(freshHost.data());
-    for (std::size_t k = 0; k < total; ++k) {
+    const auto source = [&](std::size_t k) {
       const std::size_t from = order[k];
-      const char* row =
-          from < kept ? data + staying[from] * rowBytes : recv.data() + (from - kept) * rowBytes;
-      std::copy(row, row + rowBytes, out + k * rowBytes);
+      return from < kept ? data + staying[from] * rowBytes : recv.data() + (from - kept) * rowBytes;
+    };
+    // Runs of rows that lie one after the other in the source (most of the staying ones)
+    // are copied as one block: a copy per row of a few bytes cost more than the bytes.
+    char* out = reinterpret_cast<char*>(freshHost.data());
+    for (std::size_t k = 0; k < total;) {
+      const char* first = source(k);
+      std::size_t end = k + 1;
+      while (end < total && source(end) == first + (end - k) * rowBytes)
+        ++end;
+      std::copy(first, first + (end - k) * rowBytes, out + k * rowBytes);
+      k = end;
     }
     Kokkos::deep_copy(fresh, freshHost);
     view = fresh;
