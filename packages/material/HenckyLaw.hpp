@@ -8,32 +8,10 @@
 // evaluation, to round-off, and against central differences.  (The plastic laws, whose
 // return map has no such closed form, keep the dual numbers.)
 
-#include "core/Dual.hpp"
 #include "material/LogStrain.hpp"
 #include "material/PlaneStrainLaws.hpp"
 
 namespace impm {
-
-using Dual4 = Dual<4>;  // derivatives along the four in-plane components of F, (a, b) -> 2a + b
-
-// F as dual numbers: each component its own direction.
-KOKKOS_INLINE_FUNCTION void seedDeformation(const double F[2][2], Dual4 Fd[2][2]) {
-  for (int a = 0; a < 2; ++a)
-    for (int b = 0; b < 2; ++b)
-      Fd[a][b] = Dual4::variable(F[a][b], 2 * a + b);
-}
-
-// P and A = dP/dF from a dual first Piola stress.
-KOKKOS_INLINE_FUNCTION void unpackPiola(const Dual4 P[2][2], double Pv[2][2],
-                                        double A[2][2][2][2]) {
-  for (int a = 0; a < 2; ++a)
-    for (int b = 0; b < 2; ++b) {
-      Pv[a][b] = P[a][b].v;
-      for (int c = 0; c < 2; ++c)
-        for (int d = 0; d < 2; ++d)
-          A[a][b][c][d] = P[a][b].d[2 * c + d];
-    }
-}
 
 // A = dP/dF of Hencky's law, for P = tau F^-T with tau = lambda tr(eps) I + 2 mu eps,
 // eps = (1/2) ln b, b = F F^T: along dF = e_c (x) e_d,
