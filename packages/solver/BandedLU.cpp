@@ -11,6 +11,12 @@
 
 #include "core/Errors.hpp"
 
+// BLAS's banded triangular solve (Teuchos::BLAS has none), with gfortran's hidden lengths
+// of the three character arguments.
+extern "C" void dtbsv_(const char* uplo, const char* trans, const char* diag, const int* n,
+                       const int* k, const double* a, const int* lda, double* x, const int* incx,
+                       std::size_t, std::size_t, std::size_t);
+
 namespace impm {
 
 namespace {
@@ -71,6 +77,8 @@ BandedLU::BandedLU(const CrsMatrix& A, bool acrossRanks)
   if (n_ > 0)
     Teuchos::LAPACK<int, double>().GBTRF(n_, n_, kl_, ku_, band_.data(), ldab, pivots_.data(),
                                          &info);
+  for (int i = 0; i < n_ && !interchanged_; ++i)
+    interchanged_ = pivots_[i] != i + 1;
   if (info < 0)
     throw std::logic_error("dgbtrf: argument " + std::to_string(-info) + " is invalid");
   // Every rank learns of a singular block (the lowest zero pivot's unknown), so that none
@@ -116,9 +124,23 @@ void BandedLU::solveInPlace(MultiVector& B) const {
 }
 
 void BandedLU::solveBlock(double* B, int nrhs) const {
+  const int ldab = 2 * kl_ + ku_ + 1;
+  if (!interchanged_) {
+    // Without row exchanges L is a plain unit lower band, held below U's diagonal in the
+    // same storage, and each factor is one banded triangular solve.  dgbtrs applies L a
+    // column at a time, one BLAS call (dger) per row, which on a band this narrow costs more
+    // than the arithmetic (doc/performance.md).
+    const int one = 1, upper = kl_ + ku_;
+    for (int r = 0; r < nrhs; ++r) {
+      double* x = B + static_cast<std::size_t>(r) * n_;
+      dtbsv_("L", "N", "U", &n_, &kl_, band_.data() + upper, &ldab, x, &one, 1, 1, 1);
+      dtbsv_("U", "N", "N", &n_, &upper, band_.data(), &ldab, x, &one, 1, 1, 1);
+    }
+    return;
+  }
   int info = 0;
-  Teuchos::LAPACK<int, double>().GBTRS('N', n_, kl_, ku_, nrhs, band_.data(), 2 * kl_ + ku_ + 1,
-                                       pivots_.data(), B, n_, &info);
+  Teuchos::LAPACK<int, double>().GBTRS('N', n_, kl_, ku_, nrhs, band_.data(), ldab, pivots_.data(),
+                                       B, n_, &info);
   if (info != 0)
     throw std::logic_error("dgbtrs: argument " + std::to_string(-info) + " is invalid");
 }

@@ -1,10 +1,10 @@
 #pragma once
-// The exact LU of a banded matrix, by LAPACK (dgbtrf/dgbtrs through Teuchos::LAPACK) on
-// each rank's diagonal block.  On several ranks the couplings between the blocks are
-// restored exactly by a RankCoupling (solver/RankCoupling.hpp), so the operator is A^-1 on
-// any number of ranks; or, asked to, left out: block Jacobi.  The matrix of a column a few
-// cells wide is banded (its rows couple nodes a few cells apart), so the band holds all of
-// its fill-in.
+// The exact LU of a banded matrix, by LAPACK (dgbtrf/dgbtrs through Teuchos::LAPACK; BLAS's
+// banded triangular solves when no rows were exchanged) on each rank's diagonal block.  On several
+// ranks the couplings between the blocks are restored exactly by a RankCoupling
+// (solver/RankCoupling.hpp), so the operator is A^-1 on any number of ranks; or, asked to, left
+// out: block Jacobi.  The matrix of a column a few cells wide is banded (its rows couple nodes a
+// few cells apart), so the band holds all of its fill-in.
 //
 // This is what Ifpack2's block relaxation with a "Banded" container computes; that one
 // copies the rows out through a row view per row (Kokkos reference counts and strided
@@ -38,6 +38,8 @@ class BandedLU : public Tpetra::Operator<double, LO, GO, Node> {
 
   int lowerBandwidth() const { return kl_; }
   int upperBandwidth() const { return ku_; }
+  // Whether partial pivoting exchanged rows of this rank's block (then dgbtrs solves).
+  bool interchangedRows() const { return interchanged_; }
   // The unknowns coupling the ranks' blocks (0 on one rank, or without the coupling).
   int interfaceSize() const { return coupling_ ? coupling_->interfaceSize() : 0; }
 
@@ -51,6 +53,7 @@ class BandedLU : public Tpetra::Operator<double, LO, GO, Node> {
   int n_ = 0, kl_ = 0, ku_ = 0;
   std::vector<double> band_;  // LAPACK's band storage, 2 kl + ku + 1 rows per column
   std::vector<int> pivots_;
+  bool interchanged_ = false;  // whether the factorisation exchanged any rows
   std::unique_ptr<RankCoupling> coupling_;
 };
 

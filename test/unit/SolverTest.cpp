@@ -378,9 +378,11 @@ TEST(LinearSolver, BandedLuOverTheIlutDefault) {
 
 // A non-symmetric banded matrix of n unknowns, two bands below the diagonal and one above
 // (row i: 4 at i, -1 at i - 1, -0.5 at i - 2, -2 at i + 1); with `withinRanks` only the
-// couplings between unknowns of the same rank.
+// couplings between unknowns of the same rank.  Its LU needs no row exchanges; with
+// `exchanges` every tenth diagonal entry is 0.1, smaller than the one below it, so partial
+// pivoting exchanges those rows (and the matrix stays well conditioned).
 Teuchos::RCP<CrsMatrix> bandedMatrix(const Teuchos::RCP<const Comm>& comm, GO n, bool withinRanks,
-                                     bool lastRankEmpty = false) {
+                                     bool lastRankEmpty = false, bool exchanges = false) {
   const int ranks = comm->getSize(), filled = lastRankEmpty && ranks > 1 ? ranks - 1 : ranks;
   const int rank = comm->getRank();
   const GO share = n / filled, own = rank >= filled ? 0 : share + (rank < n % filled ? 1 : 0);
@@ -388,10 +390,11 @@ Teuchos::RCP<CrsMatrix> bandedMatrix(const Teuchos::RCP<const Comm>& comm, GO n,
   auto A = Teuchos::rcp(new CrsMatrix(map, 4));
   for (std::size_t k = 0; k < map->getNodeNumElements(); ++k) {
     const GO i = map->getGlobalElement(k);
+    const double diagonal = exchanges && i % 10 == 5 ? 0.1 : 4.0;
     std::vector<GO> cols;
     std::vector<double> vals;
     for (const auto& [j, v] :
-         {std::pair<GO, double>{i - 2, -0.5}, {i - 1, -1.0}, {i, 4.0}, {i + 1, -2.0}})
+         {std::pair<GO, double>{i - 2, -0.5}, {i - 1, -1.0}, {i, diagonal}, {i + 1, -2.0}})
       if (j >= 0 && j < n && (!withinRanks || map->isNodeGlobalElement(j)))
         cols.push_back(j), vals.push_back(v);
     A->insertGlobalValues(i, Teuchos::ArrayView<const GO>(cols),
@@ -402,29 +405,34 @@ Teuchos::RCP<CrsMatrix> bandedMatrix(const Teuchos::RCP<const Comm>& comm, GO n,
 }
 
 // On a matrix without couplings between ranks the banded LU is its exact inverse, on any
-// number of ranks: M (A x) = x, with the bandwidths read from the rows.
+// number of ranks: M (A x) = x, with the bandwidths read from the rows.  Both ways of
+// solving with the factors are checked: the banded triangular solves of a factorisation
+// without row exchanges, and LAPACK's dgbtrs with them.
 TEST(BandedLU, InvertsEachRanksRowsExactly) {
   auto comm = Teuchos::DefaultComm<int>::getComm();
-  const auto A = bandedMatrix(comm, 101, true);
-  const BandedLU M(*A);
-  EXPECT_EQ(M.lowerBandwidth(), 2);
-  EXPECT_EQ(M.upperBandwidth(), 1);
-  Vector x(A->getRowMap()), b(A->getRowMap()), y(A->getRowMap());
-  for (std::size_t k = 0; k < x.getLocalLength(); ++k)
-    x.replaceLocalValue(k, std::sin(1.0 + A->getRowMap()->getGlobalElement(k)));
-  A->apply(x, b);
-  y.putScalar(7.0);  // beta = 0 overwrites it
-  M.apply(b, y);
-  y.update(-1.0, x, 1.0);
-  EXPECT_LT(y.normInf(), 1e-13);
-  // Y = alpha M X + beta Y
-  Vector z(x, Teuchos::Copy);
-  M.apply(b, z, Teuchos::NO_TRANS, 2.0, -1.0);  // 2 x - x
-  z.update(-1.0, x, 1.0);
-  EXPECT_LT(z.normInf(), 1e-13);
-  M.apply(b, z, Teuchos::NO_TRANS, 3.0, 0.0);  // 3 x
-  z.update(-3.0, x, 1.0);
-  EXPECT_LT(z.normInf(), 3e-13);
+  for (const bool exchanges : {false, true}) {
+    const auto A = bandedMatrix(comm, 101, true, false, exchanges);
+    const BandedLU M(*A);
+    EXPECT_EQ(M.lowerBandwidth(), 2);
+    EXPECT_EQ(M.upperBandwidth(), 1);
+    EXPECT_EQ(M.interchangedRows(), exchanges);
+    Vector x(A->getRowMap()), b(A->getRowMap()), y(A->getRowMap());
+    for (std::size_t k = 0; k < x.getLocalLength(); ++k)
+      x.replaceLocalValue(k, std::sin(1.0 + A->getRowMap()->getGlobalElement(k)));
+    A->apply(x, b);
+    y.putScalar(7.0);  // beta = 0 overwrites it
+    M.apply(b, y);
+    y.update(-1.0, x, 1.0);
+    EXPECT_LT(y.normInf(), 1e-13) << "row exchanges " << exchanges;
+    // Y = alpha M X + beta Y
+    Vector z(x, Teuchos::Copy);
+    M.apply(b, z, Teuchos::NO_TRANS, 2.0, -1.0);  // 2 x - x
+    z.update(-1.0, x, 1.0);
+    EXPECT_LT(z.normInf(), 1e-13) << "row exchanges " << exchanges;
+    M.apply(b, z, Teuchos::NO_TRANS, 3.0, 0.0);  // 3 x
+    z.update(-3.0, x, 1.0);
+    EXPECT_LT(z.normInf(), 3e-13) << "row exchanges " << exchanges;
+  }
 }
 
 // Where the rows couple across ranks, the banded LU restores the couplings exactly: M (A x)
@@ -433,8 +441,9 @@ TEST(BandedLU, InvertsEachRanksRowsExactly) {
 // inverse on several ranks.
 TEST(BandedLU, InvertsTheMatrixAcrossRanks) {
   auto comm = Teuchos::DefaultComm<int>::getComm();
-  for (const bool lastRankEmpty : {false, true}) {
-    const auto A = bandedMatrix(comm, 101, false, lastRankEmpty);
+  for (const auto& [lastRankEmpty, exchanges] :
+       {std::pair{false, false}, {true, false}, {false, true}}) {
+    const auto A = bandedMatrix(comm, 101, false, lastRankEmpty, exchanges);
     const int boundaries = comm->getSize() - (lastRankEmpty && comm->getSize() > 1 ? 2 : 1);
     const auto error = [&](bool acrossRanks, double alpha, double beta) {
       const BandedLU M(*A, acrossRanks);
@@ -450,7 +459,8 @@ TEST(BandedLU, InvertsTheMatrixAcrossRanks) {
     };
     for (const auto& [alpha, beta] : {std::pair{1.0, 0.0}, {2.0, -1.0}, {3.0, 0.0}})
       EXPECT_LT(error(true, alpha, beta), 1e-13 * (alpha + std::abs(beta)))
-          << "alpha " << alpha << " beta " << beta << " last rank empty " << lastRankEmpty;
+          << "alpha " << alpha << " beta " << beta << " last rank empty " << lastRankEmpty
+          << " row exchanges " << exchanges;
     if (boundaries > 0) {
       EXPECT_GT(error(false, 1.0, 0.0), 1e-3);
     }
