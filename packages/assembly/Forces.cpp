@@ -62,16 +62,15 @@ void addTangent(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& 
                   s += grad(ki, b) * An(p, a, b, c, d);
                 wGA[a][c][d] = w * s;
               }
-          for (int a = 0; a < Dim; ++a) {
-            RowAccumulator<LocalMatrix> row(K, entryDofs(ki) + a);
-            for (std::size_t kj = rowPtr(p); kj < rowPtr(p + 1); ++kj)
-              for (int c = 0; c < Dim; ++c) {
-                double s = 0;
+          NodeRowsAccumulator<LocalMatrix, Dim> rows(K, entryDofs(ki));
+          for (std::size_t kj = rowPtr(p); kj < rowPtr(p + 1); ++kj)
+            for (int c = 0; c < Dim; ++c) {
+              double s[Dim] = {};
+              for (int a = 0; a < Dim; ++a)
                 for (int d = 0; d < Dim; ++d)
-                  s += wGA[a][c][d] * grad(kj, d);
-                row.add(entryDofs(kj) + c, s);
-              }
-          }
+                  s[a] += wGA[a][c][d] * grad(kj, d);
+              rows.add(entryDofs(kj) + c, s);
+            }
         }
       });
 }

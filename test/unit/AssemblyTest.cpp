@@ -247,6 +247,42 @@ TEST(RowAccumulator, AddsWhatSumIntoValuesAddsInAnyColumnOrder) {
   EXPECT_EQ(actual.values(4), 1024.0);  // row 1, column 0, after column 5
 }
 
+// A node's rows take each column's position from the first row; where the second row's
+// columns differ (here an extra column 2 shifts its others), it must still add exactly what
+// sumIntoValues adds, and columns absent from one row or both are ignored there.
+TEST(NodeRowsAccumulator, AddsWhatSumIntoValuesAddsWhereTheRowsDiffer) {
+  using Matrix = KokkosSparse::CrsMatrix<double, int, Kokkos::DefaultHostExecutionSpace>;
+  const int rowMap[] = {0, 4, 9, 13};  // a node's rows 1 and 2 after an unrelated row 0
+  const int columns[] = {0, 5, 6, 7, 1, 3, 4, 8, 9, 1, 2, 3, 4};
+  auto fresh = [&] {
+    typename Matrix::row_map_type::non_const_type ptr("ptr", 4);
+    typename Matrix::index_type::non_const_type col("col", 13);
+    typename Matrix::values_type::non_const_type values("values", 13);
+    for (int i = 0; i < 4; ++i)
+      ptr(i) = rowMap[i];
+    for (int i = 0; i < 13; ++i)
+      col(i) = columns[i];
+    return Matrix("K", 3, 10, 13, values, ptr, col);
+  };
+  const std::vector<std::pair<int, double>> adds = {{1, 1.0},   {3, 2.0},  {4, 4.0},  {8, 8.0},
+                                                    {2, 16.0},  {9, 32.0}, {1, 64.0}, {0, 128.0},
+                                                    {4, 256.0}, {3, 512.0}};
+  Matrix expected = fresh(), actual = fresh();
+  NodeRowsAccumulator<Matrix, 2> sum(actual, 1);
+  for (const auto& [c, v] : adds) {
+    const double values[2] = {v, 3.0 * v};
+    for (int a = 0; a < 2; ++a)
+      expected.sumIntoValues(1 + a, &c, 1, &values[a], false, false);
+    sum.add(c, values);
+  }
+  for (int k = 0; k < 13; ++k)
+    EXPECT_EQ(actual.values(k), expected.values(k)) << "entry " << k;
+  EXPECT_EQ(actual.values(4), 65.0);          // row 1, column 1: 1 + 64
+  EXPECT_EQ(actual.values(10), 3.0 * 16.0);   // row 2, column 2, which row 1 lacks
+  EXPECT_EQ(actual.values(12), 3.0 * 260.0);  // row 2, column 4: 3 (4 + 256)
+  EXPECT_EQ(actual.values(0), 0.0);           // the rows before are not touched
+}
+
 // The updated-Lagrangian tangent An is the derivative of the step-start stress Pn = P(f Fn)
 // Fn^T / J_n with respect to the step's increment f.  For a linear law P = M : F, Pn is
 // linear in f, so An_aBcD must equal Pn(f + e_cD) - Pn(f) to round-off, whatever Fn is.
