@@ -211,23 +211,34 @@ TEST(GridToParticle, FlipAddsTheChangePicTakesTheField) {
     EXPECT_NEAR(v(p, 0), 0.75, 1e-14);
 }
 
+namespace {
+
+using HostMatrix = KokkosSparse::CrsMatrix<double, int, Kokkos::DefaultHostExecutionSpace>;
+
+// A matrix of `columnCount` columns with the rows' columns given (row i: columns[rowMap[i]]
+// to columns[rowMap[i + 1] - 1]) and zero values.
+HostMatrix zeroMatrix(const std::vector<int>& rowMap, const std::vector<int>& columns,
+                      int columnCount) {
+  const int rows = static_cast<int>(rowMap.size()) - 1, entries = rowMap.back();
+  typename HostMatrix::row_map_type::non_const_type ptr("ptr", rows + 1);
+  typename HostMatrix::index_type::non_const_type col("col", entries);
+  typename HostMatrix::values_type::non_const_type values("values", entries);
+  for (int i = 0; i <= rows; ++i)
+    ptr(i) = rowMap[i];
+  for (int k = 0; k < entries; ++k)
+    col(k) = columns[k];
+  return HostMatrix("K", rows, columnCount, entries, values, ptr, col);
+}
+
+}  // namespace
+
 // The accumulator must add exactly what KokkosSparse's own search adds, whatever the order
 // of the columns: increasing (the fast path), decreasing (wrapping around every time),
 // repeated, and absent from the row (ignored).
 TEST(RowAccumulator, AddsWhatSumIntoValuesAddsInAnyColumnOrder) {
-  using Matrix = KokkosSparse::CrsMatrix<double, int, Kokkos::DefaultHostExecutionSpace>;
-  const int rowMap[] = {0, 4, 7};  // row 0: columns 1 3 4 8; row 1: columns 0 2 5
-  const int columns[] = {1, 3, 4, 8, 0, 2, 5};
-  auto fresh = [&] {
-    typename Matrix::row_map_type::non_const_type ptr("ptr", 3);
-    typename Matrix::index_type::non_const_type col("col", 7);
-    typename Matrix::values_type::non_const_type values("values", 7);
-    for (int i = 0; i < 3; ++i)
-      ptr(i) = rowMap[i];
-    for (int i = 0; i < 7; ++i)
-      col(i) = columns[i];
-    return Matrix("K", 2, 9, 7, values, ptr, col);
-  };
+  using Matrix = HostMatrix;
+  // row 0: columns 1 3 4 8; row 1: columns 0 2 5
+  const auto fresh = [] { return zeroMatrix({0, 4, 7}, {1, 3, 4, 8, 0, 2, 5}, 9); };
   const std::vector<std::pair<int, double>> adds = {{1, 1.0},   {3, 2.0},  {8, 4.0},  {4, 8.0},
                                                     {1, 16.0},  {7, 32.0}, {8, 64.0}, {1, 128.0},
                                                     {5, 256.0}, {0, 512.0}};
@@ -251,18 +262,10 @@ TEST(RowAccumulator, AddsWhatSumIntoValuesAddsInAnyColumnOrder) {
 // columns differ (here an extra column 2 shifts its others), it must still add exactly what
 // sumIntoValues adds, and columns absent from one row or both are ignored there.
 TEST(NodeRowsAccumulator, AddsWhatSumIntoValuesAddsWhereTheRowsDiffer) {
-  using Matrix = KokkosSparse::CrsMatrix<double, int, Kokkos::DefaultHostExecutionSpace>;
-  const int rowMap[] = {0, 4, 9, 13};  // a node's rows 1 and 2 after an unrelated row 0
-  const int columns[] = {0, 5, 6, 7, 1, 3, 4, 8, 9, 1, 2, 3, 4};
-  auto fresh = [&] {
-    typename Matrix::row_map_type::non_const_type ptr("ptr", 4);
-    typename Matrix::index_type::non_const_type col("col", 13);
-    typename Matrix::values_type::non_const_type values("values", 13);
-    for (int i = 0; i < 4; ++i)
-      ptr(i) = rowMap[i];
-    for (int i = 0; i < 13; ++i)
-      col(i) = columns[i];
-    return Matrix("K", 3, 10, 13, values, ptr, col);
+  using Matrix = HostMatrix;
+  // a node's rows 1 (columns 1 3 4 8 9) and 2 (columns 1 2 3 4) after an unrelated row 0
+  const auto fresh = [] {
+    return zeroMatrix({0, 4, 9, 13}, {0, 5, 6, 7, 1, 3, 4, 8, 9, 1, 2, 3, 4}, 10);
   };
   const std::vector<std::pair<int, double>> adds = {{1, 1.0},   {3, 2.0},  {4, 4.0},  {8, 8.0},
                                                     {2, 16.0},  {9, 32.0}, {1, 64.0}, {0, 128.0},
