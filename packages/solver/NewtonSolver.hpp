@@ -58,6 +58,9 @@ class NewtonSolver {
     if (!reuse_.is_null())
       reuse_->release(prec_.get());
   }
+  // Whether the kept preconditioner also serves once nodes retire (solver/SystemLayout.hpp):
+  // a multigrid hierarchy kept while Preconditioner Reuse is on.
+  bool preconditionerServesRetiredNodes() const { return !reuse_.is_null() && reuse_->isMueLu(); }
   // Preconditioners built and reused so far (zeros without a preconditioner).
   ReuseCounts preconditionerCounts() const {
     return reuse_.is_null() ? ReuseCounts{} : reuse_->counts();

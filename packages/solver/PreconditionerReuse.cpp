@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Thyra_DefaultPreconditioner.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 
@@ -21,9 +22,22 @@ void ReusingPreconditionerFactory::recordSolve(int iterations, bool converged) {
     firstIterations_ = iterations;
 }
 
-void ReusingPreconditionerFactory::startOver(Thyra::PreconditionerBase<double>* prec) {
+void ReusingPreconditionerFactory::startOver(Thyra::PreconditionerBase<double>* prec) const {
   if (auto* defaultPrec = dynamic_cast<Thyra::DefaultPreconditioner<double>*>(prec))
     defaultPrec->uninitialize();
+  kept_ = Teuchos::null;
+}
+
+DecoupledRows ReusingPreconditionerFactory::decoupledRowsOf(
+    const Tpetra::Operator<double, LO, GO, Node>& op) {
+  const auto* matrix = dynamic_cast<const CrsMatrix*>(&op);
+  return matrix ? decoupledRows(*matrix) : DecoupledRows{};
+}
+
+void ReusingPreconditionerFactory::serve(const Teuchos::RCP<Thyra::LinearOpBase<double>>& op,
+                                         Thyra::PreconditionerBase<double>* prec) {
+  if (auto* defaultPrec = dynamic_cast<Thyra::DefaultPreconditioner<double>*>(prec))
+    defaultPrec->initializeUnspecified(op);
 }
 
 bool ReusingPreconditionerFactory::worthRebuilding() const {
@@ -53,7 +67,19 @@ void ReusingPreconditionerFactory::initializePrec(
   const bool built = !prec->getUnspecifiedPrecOp().is_null();
   if (sameUnknowns && built && !worthRebuilding()) {
     ++counts_.reuses;
+    // Where rows were decoupled since the build (retired nodes), the decoupled rows are
+    // solved exactly and the others by the kept preconditioner (solver/DecoupledRows.hpp).
+    // Decided on every rank alike: the wrapped preconditioner's applications are collective
+    // in another way than the kept one's (Thyra compares the vector spaces).
+    auto decoupled = decoupledRowsOf(*op);
+    int same = decoupled.rows == builtDecoupled_ ? 1 : 0, everywhere = 0;
+    Teuchos::reduceAll(*map->getComm(), Teuchos::REDUCE_MIN, same, Teuchos::outArg(everywhere));
+    serve(everywhere ? kept_ : withDecoupledRows(kept_, map, std::move(decoupled)), prec);
     return;
+  }
+  if (built) {  // MueLu refreshes the hierarchy it finds in prec: its own, not the wrapped one
+    serve(kept_, prec);
+    kept_ = Teuchos::null;  // not held beside the new one while it is built
   }
   if (!sameUnknowns) {
     // Start over: a hierarchy (or factorisation) of other unknowns cannot be refreshed.
@@ -65,6 +91,8 @@ void ReusingPreconditionerFactory::initializePrec(
     IMPM_TIMER("preconditioner");
     inner_->initializePrec(fwdOpSrc, prec, supportSolveUse);
   }
+  kept_ = prec->getNonconstUnspecifiedPrecOp();
+  builtDecoupled_ = decoupledRowsOf(*op).rows;
   map_ = map;
   firstIterations_ = -1;
   lastConverged_ = true;
@@ -89,6 +117,7 @@ void ReusingPreconditionerFactory::uninitializePrec(
     Thyra::ESupportSolveUse* supportSolveUse) const {
   inner_->uninitializePrec(prec, fwdOpSrc, supportSolveUse);
   map_ = Teuchos::null;
+  kept_ = Teuchos::null;
 }
 
 void ReusingPreconditionerFactory::setParameterList(

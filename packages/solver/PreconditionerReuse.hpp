@@ -11,7 +11,9 @@
 //   - when the last solve took more than `Rebuild Factor` times the iterations of the
 //     first solve after the last build (at least `Minimum Iterations`);
 //   - otherwise the preconditioner built from an earlier Jacobian stays: the Krylov solve
-//     still solves the current Jacobian to its tolerance, so only the cost changes.
+//     still solves the current Jacobian to its tolerance, so only the cost changes.  Rows
+//     that hold their diagonal alone (nodes retired since the build) are then solved
+//     exactly and the kept preconditioner serves the others (solver/DecoupledRows.hpp).
 // With MueLu, a rebuild on unchanged unknowns keeps the aggregates and the tentative
 // prolongator (MueLu's "reuse: type" tP) and recomputes the smoothed prolongator, the coarse
 // operators and the smoothers; new unknowns
@@ -23,6 +25,7 @@
 #include <Thyra_PreconditionerFactoryBase.hpp>
 
 #include "core/TpetraTypes.hpp"
+#include "solver/DecoupledRows.hpp"
 
 namespace impm {
 
@@ -51,6 +54,7 @@ class ReusingPreconditionerFactory : public Thyra::PreconditionerFactoryBase<dou
   void setNullSpace(NullSpace nullSpace) { nullSpace_ = std::move(nullSpace); }
   // The outcome of the linear solve that used the current preconditioner.
   void recordSolve(int iterations, bool converged);
+  bool isMueLu() const { return muelu_; }
   ReuseCounts counts() const { return counts_; }
   // The next request builds a new preconditioner from scratch, as a fresh run would (a run
   // restarted from a checkpoint then follows the uninterrupted run's path bit for bit).
@@ -77,7 +81,13 @@ class ReusingPreconditionerFactory : public Thyra::PreconditionerFactoryBase<dou
  private:
   bool worthRebuilding() const;
   // Frees what `prec` holds (its hierarchy or factors, and the operator it was built from).
-  static void startOver(Thyra::PreconditionerBase<double>* prec);
+  void startOver(Thyra::PreconditionerBase<double>* prec) const;
+  // The decoupled rows of `op` if it is a matrix, none otherwise.
+  static DecoupledRows decoupledRowsOf(const Tpetra::Operator<double, LO, GO, Node>& op);
+  // Makes `op` the operator of `prec`.
+  // (Non-const: MueLu refreshes the hierarchy it finds there.)
+  static void serve(const Teuchos::RCP<Thyra::LinearOpBase<double>>& op,
+                    Thyra::PreconditionerBase<double>* prec);
 
   Teuchos::RCP<Thyra::PreconditionerFactoryBase<double>> inner_;
   bool muelu_;
@@ -85,7 +95,10 @@ class ReusingPreconditionerFactory : public Thyra::PreconditionerFactoryBase<dou
   NullSpace nullSpace_;
   // initializePrec() is const in Thyra's interface; what it remembers is not.
   mutable Teuchos::RCP<const Map> map_;  // the unknowns of the current preconditioner
-  mutable int firstIterations_ = -1;     // of the first solve after the last build
+  // The operator the inner factory built (served as it is, or wrapped).
+  mutable Teuchos::RCP<Thyra::LinearOpBase<double>> kept_;
+  mutable std::vector<LO> builtDecoupled_;  // the decoupled rows of the Jacobian it was built from
+  mutable int firstIterations_ = -1;        // of the first solve after the last build
   mutable int lastIterations_ = 0;
   mutable bool lastConverged_ = true;
   mutable ReuseCounts counts_;

@@ -24,7 +24,10 @@ Stepper<Dim>::Stepper(StepperSetup<Dim> setup, double nominal, double minimum, b
       layouts_(setup_.reuseLayout, retireNodes) {
   layouts_.setOnNewUnknowns(
       [newton = &setup_.newton](const Map& next) { newton->releasePreconditionerUnlessFor(next); });
-  layouts_.setOnRetiredNodes([newton = &setup_.newton] { newton->releasePreconditioner(); });
+  if (setup_.newton.preconditionerServesRetiredNodes())
+    layouts_.setKeepUnknowns(true);
+  else
+    layouts_.setOnRetiredNodes([newton = &setup_.newton] { newton->releasePreconditioner(); });
 }
 
 template <int Dim>

@@ -76,12 +76,16 @@ Vector integratedRows(const DofMap<Dim>& dofs, const Import& importer, const Ent
   return owned;
 }
 
-// Nodes only a boundary condition reaches would have empty rows.  Collective.
+// The owned rows that no entry marks: nodes only a boundary condition reaches would have
+// empty rows (an error); nodes of `kept` that nothing touches any more are retired (their
+// rows, every component, are returned).  Collective.
 template <int Dim>
-void checkEveryActiveNodeIsIntegrated(const GridGeometry<Dim>& grid, const SystemLayout<Dim>& l,
-                                      const EntryDofs<>& entries) {
+std::vector<LO> rowsNotIntegrated(const GridGeometry<Dim>& grid, const SystemLayout<Dim>& l,
+                                  const EntryDofs<>& entries, const std::vector<GlobalId>& kept,
+                                  const std::vector<GlobalId>& contributionNodes) {
   const auto& dofs = l.dofs;
   const Vector owned = integratedRows(dofs, *l.importer, entries);
+  std::vector<LO> retired;
   collectively(*dofs.ownedMap()->getComm(), [&] {
     auto values = owned.getData();
     const auto& map = *dofs.ownedMap();
@@ -89,21 +93,44 @@ void checkEveryActiveNodeIsIntegrated(const GridGeometry<Dim>& grid, const Syste
       const GO dof = map.getGlobalElement(static_cast<LO>(k));
       if (values[k] > 0.0 || dofs.isExtraDof(dof))
         continue;
+      const GlobalId node = dof / Dim;
+      if (std::binary_search(kept.begin(), kept.end(), node) &&
+          !std::binary_search(contributionNodes.begin(), contributionNodes.end(), node)) {
+        retired.push_back(static_cast<LO>(k));
+        continue;
+      }
       throw NumericalError(
-          nodeLabel(grid, dof / Dim) +
+          nodeLabel(grid, node) +
           " is reached by a boundary condition but by no integration point, so its row of the "
           "system is empty (classic MPM does this when a body's end lies in a cell that holds "
           "no particle centre); use gimp or cpdi, or more particles per cell");
     }
   });
+  return retired;
 }
 
-// The unknowns, the entries' overlap indices, the importer and the mask.  Collective.
 template <int Dim>
-std::pair<std::shared_ptr<SystemLayout<Dim>>, EntryDofs<>> numberUnknowns(
-    const NodeOwnership<Dim>& ownership, const ParticleGridMap<Dim>& map,
-    std::vector<int> firstExtra, std::vector<GlobalId> touched, const std::vector<ExtraDof>& extras,
-    NodeCoupling coupling) {
+struct Numbered {
+  std::shared_ptr<SystemLayout<Dim>> layout;
+  EntryDofs<> entries;
+  std::vector<LO> retired;  // owned rows of kept nodes that nothing touches (ascending)
+};
+
+// The unknowns, the entries' overlap indices, the importer and the mask.  `kept`: nodes
+// that stay unknowns though nothing touches them (retired), ascending.  Collective.
+template <int Dim>
+Numbered<Dim> numberUnknowns(const NodeOwnership<Dim>& ownership, const ParticleGridMap<Dim>& map,
+                             std::vector<int> firstExtra, std::vector<GlobalId> touched,
+                             const std::vector<ExtraDof>& extras, NodeCoupling coupling,
+                             const std::vector<GlobalId>& kept) {
+  // The contributions' nodes follow the map's entries' in `touched` (keyOf; kept nodes come
+  // only with shared coupling, whose key lists every entry's node).
+  std::vector<GlobalId> contributionNodes;
+  if (!kept.empty()) {
+    contributionNodes.assign(touched.begin() + map.node.extent(0), touched.end());
+    sortUnique(contributionNodes);
+  }
+  touched.insert(touched.end(), kept.begin(), kept.end());
   auto l = std::make_shared<SystemLayout<Dim>>(
       std::move(firstExtra), DofMap<Dim>(ownership, std::move(touched), extras), coupling);
   const auto& dofs = l->dofs;
@@ -123,8 +150,17 @@ std::pair<std::shared_ptr<SystemLayout<Dim>>, EntryDofs<>> numberUnknowns(
     }
   }
   l->nodalMask = mask;
-  checkEveryActiveNodeIsIntegrated(ownership.grid(), *l, entries);
-  return {l, entries};
+  auto retired = rowsNotIntegrated(ownership.grid(), *l, entries, kept, contributionNodes);
+  return {l, entries, std::move(retired)};
+}
+
+// Whether the retired rows exceed the share a layout may keep (covering()), and whether
+// there are any, on every rank.  Collective.
+std::pair<bool, bool> retiredBeyondShareAndAny(const std::vector<LO>& retired, const Map& owned) {
+  const long long mine = static_cast<long long>(retired.size());
+  long long all = 0;
+  Teuchos::reduceAll(*owned.getComm(), Teuchos::REDUCE_SUM, mine, Teuchos::outArg(all));
+  return {static_cast<double>(all) > kMaxRetiredShare * owned.getGlobalNumElements(), all > 0};
 }
 
 }  // namespace
@@ -149,11 +185,7 @@ template <int Dim>
 std::optional<LaidOut<Dim>> LayoutCache<Dim>::covering(const LayoutKey<Dim>& key,
                                                        const ParticleGridMap<Dim>& map,
                                                        const Comm& comm) const {
-  const bool comparable =
-      allowRetired_ && layout_ && key.coupling == NodeCoupling::shared &&
-      key_.coupling == NodeCoupling::shared && key.ownership == key_.ownership &&
-      key.ownershipRevision == key_.ownershipRevision && key.extraNodes == key_.extraNodes;
-  if (!onEveryRank(comparable, comm))
+  if (!onEveryRank(comparableWith(key), comm))
     return std::nullopt;
   const Map& overlap = *layout_->dofs.overlapMap();
   bool found = false;
@@ -175,14 +207,26 @@ std::optional<LaidOut<Dim>> LayoutCache<Dim>::covering(const LayoutKey<Dim>& key
   // column compressed to a third of its height would end with two thirds of its rows
   // retired (the Hencky column took 8-14 % longer than with layouts built every step).
   // Past a small share, a new layout costs less than keeping them.
-  const long long mine = static_cast<long long>(out.retired.size());
-  long long all = 0;
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, mine, Teuchos::outArg(all));
-  if (static_cast<double>(all) >
-      kMaxRetiredShare * layout_->dofs.ownedMap()->getGlobalNumElements())
+  const auto [beyond, any] = retiredBeyondShareAndAny(out.retired, *layout_->dofs.ownedMap());
+  if (beyond)
     return std::nullopt;
-  out.anyRetired = all > 0;
+  out.anyRetired = any;
   return out;
+}
+
+template <int Dim>
+bool LayoutCache<Dim>::comparableWith(const LayoutKey<Dim>& key) const {
+  return allowRetired_ && layout_ && key.coupling == NodeCoupling::shared &&
+         key_.coupling == NodeCoupling::shared && key.ownership == key_.ownership &&
+         key.ownershipRevision == key_.ownershipRevision && key.extraNodes == key_.extraNodes;
+}
+
+template <int Dim>
+const std::vector<GlobalId>& LayoutCache<Dim>::nodesToKeep(const LayoutKey<Dim>& key,
+                                                           const Comm& comm) const {
+  static const std::vector<GlobalId> none;
+  return onEveryRank(keepUnknowns_ && comparableWith(key), comm) ? layout_->dofs.ownedActiveNodes()
+                                                                 : none;
 }
 
 template <int Dim>
@@ -263,11 +307,18 @@ LaidOut<Dim> layoutOf(const LayoutInputs<Dim>& in, LayoutCache<Dim>& cache) {
   if (kept) {
     out = *kept;
   } else {
-    auto [layout, entries] =
-        numberUnknowns(in.ownership, in.map, firstExtra, key.touched, extras, in.coupling);
-    cache.newUnknowns(*layout->dofs.ownedMap());
-    fresh = layout;
-    out = LaidOut<Dim>{fresh, entries, {}, false};
+    auto numbered = numberUnknowns(in.ownership, in.map, firstExtra, key.touched, extras,
+                                   in.coupling, cache.nodesToKeep(key, comm));
+    auto [beyond, any] =
+        retiredBeyondShareAndAny(numbered.retired, *numbered.layout->dofs.ownedMap());
+    if (beyond) {
+      numbered =
+          numberUnknowns(in.ownership, in.map, firstExtra, key.touched, extras, in.coupling, {});
+      any = false;
+    }
+    cache.newUnknowns(*numbered.layout->dofs.ownedMap());
+    fresh = numbered.layout;
+    out = LaidOut<Dim>{fresh, std::move(numbered.entries), std::move(numbered.retired), any};
   }
 
   const SystemLayout<Dim>& unknowns = *out.layout;

@@ -109,12 +109,24 @@ class LayoutCache {
   // new graph is built, and the callback is told.  Collective.
   void newUnknowns(const Map& owned);
   // Told when a kept layout serves with retired nodes, before the step's matrix is made:
-  // the stepper frees its preconditioner, as it does for new unknowns.  One built while the
-  // retired nodes were active, whose rows held the little stiffness of the particles about
-  // to leave them, is a poor one once they are fixed (GMRES took hundreds of iterations
-  // instead of 10 on a compressed column); and one kept holds the last step's Jacobian
-  // while the next is made (10 % more peak memory on that column).
+  // a stepper whose preconditioner does not serve retired nodes frees it, as it does for
+  // new unknowns.  A factorisation built while the retired nodes were active, whose rows
+  // held the little stiffness of the particles about to leave them, is a poor one once
+  // they are fixed (GMRES took hundreds of iterations instead of 10 on a compressed column);
+  // solved exactly on those rows (solver/DecoupledRows.hpp) it still took 853 iterations
+  // against 611 on the Hencky column at 1 x 16384 cells, and it holds the last step's
+  // Jacobian while the next is made (10 % more peak memory on that column).
   void setOnRetiredNodes(std::function<void()> f) { onRetiredNodes_ = std::move(f); }
+  // Whether a new layout keeps the unknowns of the kept one that nothing touches any more
+  // (as retired nodes, under the same share as covering()), so that the unknowns, and the
+  // preconditioner built for them, stay the same while the particles leave nodes.  Where
+  // the preconditioner serves retired nodes: a multigrid hierarchy (elsewhere the retired
+  // rows would cost their share of every solve for nothing).  The 64 x 512 column, whose
+  // top leaves a row of nodes every load step, then builds one hierarchy instead of ten.
+  void setKeepUnknowns(bool keep) { keepUnknowns_ = keep; }
+  // The kept layout's owned nodes, which a new layout for `key` keeps as unknowns, or none.
+  // Collective.
+  const std::vector<GlobalId>& nodesToKeep(const LayoutKey<Dim>& key, const Comm& comm) const;
 
   bool enabled() const { return enabled_; }
   int built() const { return built_; }
@@ -126,12 +138,15 @@ class LayoutCache {
   // The kept layout if it covers `map` (key `key`), with the retired nodes.  Collective.
   std::optional<LaidOut<Dim>> covering(const LayoutKey<Dim>& key, const ParticleGridMap<Dim>& map,
                                        const Comm& comm) const;
+  // Whether the kept layout's unknowns may serve `key` with retired nodes (local).
+  bool comparableWith(const LayoutKey<Dim>& key) const;
   // Whether every node pair of the particles whose nodes differ from the kept key's has its
   // entries in the kept graph (local).
   bool pairsCovered(const LayoutKey<Dim>& key, const EntryDofs<>& entries) const;
 
   bool enabled_;
   bool allowRetired_ = false;
+  bool keepUnknowns_ = false;
   LayoutKey<Dim> key_;
   std::shared_ptr<const SystemLayout<Dim>> layout_;
   EntryDofs<> entries_;  // of the kept key's map (with retired nodes, not the layout's own)

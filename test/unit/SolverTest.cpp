@@ -16,6 +16,7 @@
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
 #include "solver/BandedLU.hpp"
+#include "solver/DecoupledRows.hpp"
 #include "solver/LinearSolver.hpp"
 #include "solver/NewtonSolver.hpp"
 #include "solver/PreconditionerReuse.hpp"
@@ -469,6 +470,64 @@ TEST(BandedLU, InvertsTheMatrixAcrossRanks) {
 
 // A zero row makes a block singular: a NumericalError naming the unknown on every rank (so
 // that none waits for the others in a collective call), not a crash.
+// A kept preconditioner on a Jacobian with rows decoupled since its build: the rows that
+// hold their diagonal alone (an explicit zero beside it too, as in a kept graph) are found,
+// solved by a division, and left out of the kept preconditioner's input; the other rows
+// are the kept preconditioner's.  Y = alpha op(X) + beta Y, on any number of ranks.
+TEST(DecoupledRows, SolvedExactlyAndLeftOutOfTheKeptPreconditioner) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  const auto M = bandedMatrix(comm, 101, false);  // stands for the kept preconditioner
+  const auto map = M->getRowMap();
+  auto J = Teuchos::rcp(new CrsMatrix(map, 4));
+  auto decoupledAt = [](GO i) { return i % 7 == 3; };
+  for (std::size_t k = 0; k < map->getNodeNumElements(); ++k) {
+    const GO i = map->getGlobalElement(k);
+    std::vector<GO> cols{i};
+    std::vector<double> vals{decoupledAt(i) ? 2.0 + i : 4.0};
+    for (GO j : {i - 1, i + 1})
+      if (j >= 0 && j < 101)
+        cols.push_back(j), vals.push_back(decoupledAt(i) ? 0.0 : -1.0);
+    J->insertGlobalValues(i, Teuchos::ArrayView<const GO>(cols),
+                          Teuchos::ArrayView<const double>(vals));
+  }
+  J->fillComplete();
+  const DecoupledRows found = decoupledRows(*J);
+  std::vector<LO> expected;
+  for (std::size_t k = 0; k < map->getNodeNumElements(); ++k)
+    if (decoupledAt(map->getGlobalElement(k)))
+      expected.push_back(static_cast<LO>(k));
+  ASSERT_EQ(found.rows, expected);
+
+  auto space = Thyra::tpetraVectorSpace<double>(map);
+  const auto W = withDecoupledRows(Thyra::tpetraLinearOp<double, LO, GO, Node>(
+                                       space, space, Teuchos::rcp_const_cast<CrsMatrix>(M)),
+                                   map, found);
+  auto x = Teuchos::rcp(new Vector(map)), y = Teuchos::rcp(new Vector(map));
+  Vector z(map), expectedY(map);
+  for (std::size_t k = 0; k < map->getNodeNumElements(); ++k) {
+    const GO i = map->getGlobalElement(k);
+    x->replaceLocalValue(k, std::sin(1.0 + i));
+    z.replaceLocalValue(k, decoupledAt(i) ? 0.0 : std::sin(1.0 + i));
+  }
+  M->apply(z, expectedY);  // M z on the coupled rows
+  for (std::size_t k = 0; k < map->getNodeNumElements(); ++k) {
+    const GO i = map->getGlobalElement(k);
+    if (decoupledAt(i))
+      expectedY.replaceLocalValue(k, std::sin(1.0 + i) / (2.0 + i));
+  }
+  y->putScalar(1.0);
+  Teuchos::RCP<const Thyra::VectorSpaceBase<double>> base = space;
+  Thyra::apply(*W, Thyra::NOTRANS,
+               *Thyra::createConstVector<double, LO, GO, Node>(x.getConst(), base),
+               Thyra::createVector<double, LO, GO, Node>(y, base).ptr(), 2.0, -3.0);  // 2 W x - 3
+  expectedY.scale(2.0);
+  Vector ones(map);
+  ones.putScalar(1.0);
+  expectedY.update(-3.0, ones, 1.0);
+  y->update(-1.0, expectedY, 1.0);
+  EXPECT_LT(y->normInf(), 1e-14);
+}
+
 TEST(BandedLU, SingularRowsAreANumericalError) {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   auto map = Teuchos::rcp(new Map(GO(4 * comm->getSize()), 0, comm));
