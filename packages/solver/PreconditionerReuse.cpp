@@ -34,6 +34,19 @@ DecoupledRows ReusingPreconditionerFactory::decoupledRowsOf(
   return matrix ? decoupledRows(*matrix) : DecoupledRows{};
 }
 
+void ReusingPreconditionerFactory::serveKept(const Tpetra::Operator<double, LO, GO, Node>& op,
+                                             Thyra::PreconditionerBase<double>* prec) const {
+  // Where rows were decoupled since the build (retired nodes), the decoupled rows are
+  // solved exactly and the others by the kept preconditioner (solver/DecoupledRows.hpp).
+  // Decided on every rank alike: the wrapped preconditioner's applications are collective
+  // in another way than the kept one's (Thyra compares the vector spaces).
+  auto decoupled = decoupledRowsOf(op);
+  int same = decoupled.rows == builtDecoupled_ ? 1 : 0, everywhere = 0;
+  const auto& map = op.getRangeMap();
+  Teuchos::reduceAll(*map->getComm(), Teuchos::REDUCE_MIN, same, Teuchos::outArg(everywhere));
+  serve(everywhere ? kept_ : withDecoupledRows(kept_, map, std::move(decoupled)), prec);
+}
+
 void ReusingPreconditionerFactory::serve(const Teuchos::RCP<Thyra::LinearOpBase<double>>& op,
                                          Thyra::PreconditionerBase<double>* prec) {
   if (auto* defaultPrec = dynamic_cast<Thyra::DefaultPreconditioner<double>*>(prec))
@@ -67,14 +80,8 @@ void ReusingPreconditionerFactory::initializePrec(
   const bool built = !prec->getUnspecifiedPrecOp().is_null();
   if (sameUnknowns && built && !worthRebuilding()) {
     ++counts_.reuses;
-    // Where rows were decoupled since the build (retired nodes), the decoupled rows are
-    // solved exactly and the others by the kept preconditioner (solver/DecoupledRows.hpp).
-    // Decided on every rank alike: the wrapped preconditioner's applications are collective
-    // in another way than the kept one's (Thyra compares the vector spaces).
-    auto decoupled = decoupledRowsOf(*op);
-    int same = decoupled.rows == builtDecoupled_ ? 1 : 0, everywhere = 0;
-    Teuchos::reduceAll(*map->getComm(), Teuchos::REDUCE_MIN, same, Teuchos::outArg(everywhere));
-    serve(everywhere ? kept_ : withDecoupledRows(kept_, map, std::move(decoupled)), prec);
+    if (muelu_)  // the only kind kept across retired nodes (Stepper)
+      serveKept(*op, prec);
     return;
   }
   if (built) {  // MueLu refreshes the hierarchy it finds in prec: its own, not the wrapped one
@@ -92,7 +99,8 @@ void ReusingPreconditionerFactory::initializePrec(
     inner_->initializePrec(fwdOpSrc, prec, supportSolveUse);
   }
   kept_ = prec->getNonconstUnspecifiedPrecOp();
-  builtDecoupled_ = decoupledRowsOf(*op).rows;
+  if (muelu_)
+    builtDecoupled_ = decoupledRowsOf(*op).rows;
   map_ = map;
   firstIterations_ = -1;
   lastConverged_ = true;

@@ -84,6 +84,10 @@ class ReusingPreconditionerFactory : public Thyra::PreconditionerFactoryBase<dou
   void startOver(Thyra::PreconditionerBase<double>* prec) const;
   // The decoupled rows of `op` if it is a matrix, none otherwise.
   static DecoupledRows decoupledRowsOf(const Tpetra::Operator<double, LO, GO, Node>& op);
+  // Makes the kept preconditioner the operator of `prec`, for the Jacobian `op`: wrapped if
+  // rows of `op` were decoupled since the build.  Collective.
+  void serveKept(const Tpetra::Operator<double, LO, GO, Node>& op,
+                 Thyra::PreconditionerBase<double>* prec) const;
   // Makes `op` the operator of `prec`.
   // (Non-const: MueLu refreshes the hierarchy it finds there.)
   static void serve(const Teuchos::RCP<Thyra::LinearOpBase<double>>& op,
@@ -97,8 +101,9 @@ class ReusingPreconditionerFactory : public Thyra::PreconditionerFactoryBase<dou
   mutable Teuchos::RCP<const Map> map_;  // the unknowns of the current preconditioner
   // The operator the inner factory built (served as it is, or wrapped).
   mutable Teuchos::RCP<Thyra::LinearOpBase<double>> kept_;
-  mutable std::vector<LO> builtDecoupled_;  // the decoupled rows of the Jacobian it was built from
-  mutable int firstIterations_ = -1;        // of the first solve after the last build
+  // The decoupled rows of the Jacobian it was built from (MueLu's only).
+  mutable std::vector<LO> builtDecoupled_;
+  mutable int firstIterations_ = -1;  // of the first solve after the last build
   mutable int lastIterations_ = 0;
   mutable bool lastConverged_ = true;
   mutable ReuseCounts counts_;

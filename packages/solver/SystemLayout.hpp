@@ -29,6 +29,10 @@
 // keep the unknowns and the graph, up to 5 % of the unknowns retired (covering()).  The
 // answers equal those of a built layout to round-off (the zero rows and entries change the
 // order of sums; on the columns they are bit for bit the same).
+// Where the preconditioner serves retired nodes (a multigrid hierarchy: setKeepUnknowns),
+// a new layout also keeps the kept one's unknowns that nothing touches any more, retired
+// under the same share: while no node is new, the unknowns, and the hierarchy built for
+// them, stay the same as the particles leave nodes.
 
 #include <functional>
 #include <memory>
