@@ -493,7 +493,11 @@ std::vector<std::string> Simulation<Dim>::finish(double finalTime,
     if (layouts.built() + layouts.reused() > 1)
       std::cout << "  graph: built " << layouts.built() << " times, reused " << layouts.reused()
                 << " times (" << layouts.reusedRetiring()
-                << " of them with nodes that no particle reaches any more)\n";
+                << " of them with nodes that no particle reaches any more)"
+                << (layouts.builtRetiring() > 0 ? "; " + std::to_string(layouts.builtRetiring()) +
+                                                      " new ones kept such nodes as unknowns"
+                                                : std::string())
+                << "\n";
     if (loadBalance_->repartitions() > 0)
       std::cout << "  load balance: the cells were repartitioned " << loadBalance_->repartitions()
                 << " times\n";

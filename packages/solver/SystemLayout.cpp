@@ -282,8 +282,8 @@ template <int Dim>
 void LayoutCache<Dim>::keep(LayoutKey<Dim> key, const LaidOut<Dim>& laidOut) {
   const bool same = laidOut.layout == layout_;
   ++(same ? reused_ : built_);
-  if (same && laidOut.anyRetired)
-    ++reusedRetiring_;
+  if (laidOut.anyRetired)
+    ++(same ? reusedRetiring_ : builtRetiring_);
   if (laidOut.anyRetired && onRetiredNodes_)
     onRetiredNodes_();
   if (!enabled_)

@@ -137,6 +137,8 @@ class LayoutCache {
   int reused() const { return reused_; }
   // Of the reuses, those with retired nodes.
   int reusedRetiring() const { return reusedRetiring_; }
+  // Of the layouts built, those that kept retired nodes as unknowns (setKeepUnknowns).
+  int builtRetiring() const { return builtRetiring_; }
 
  private:
   // The kept layout if it covers `map` (key `key`), with the retired nodes.  Collective.
@@ -158,7 +160,7 @@ class LayoutCache {
   bool anyRetired_ = false;
   std::function<void(const Map&)> onNewUnknowns_;
   std::function<void()> onRetiredNodes_;
-  int built_ = 0, reused_ = 0, reusedRetiring_ = 0;
+  int built_ = 0, reused_ = 0, reusedRetiring_ = 0, builtRetiring_ = 0;
 };
 
 template <int Dim>
