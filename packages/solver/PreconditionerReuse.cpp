@@ -84,7 +84,9 @@ void ReusingPreconditionerFactory::initializePrec(
       serveKept(*op, prec);
     return;
   }
-  if (built) {  // MueLu refreshes the hierarchy it finds in prec: its own, not the wrapped one
+  // MueLu refreshes the hierarchy it finds in prec: its own, not the wrapped one.  (None
+  // is kept after a build that threw.)
+  if (built && !kept_.is_null()) {
     serve(kept_, prec);
     kept_ = Teuchos::null;  // not held beside the new one while it is built
   }
