@@ -85,4 +85,10 @@ std::vector<double> gatherToAll(const Comm& comm, const std::vector<double>& loc
   return all;
 }
 
+bool onEveryRank(bool mine, const Comm& comm) {
+  int local = mine ? 1 : 0, all = 0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, local, Teuchos::outArg(all));
+  return all == 1;
+}
+
 }  // namespace impm

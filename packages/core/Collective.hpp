@@ -18,6 +18,9 @@ void collectively(const Comm& comm, const std::function<void()>& phase);
 // gathers a distributed vector to the rank that writes a file.
 Teuchos::RCP<const Map> rootMap(GlobalId n, const Teuchos::RCP<const Comm>& comm);
 
+// Whether `mine` holds on every rank (a decision every rank must take alike).  Collective.
+bool onEveryRank(bool mine, const Comm& comm);
+
 // Every rank's values, concatenated in rank order, on every rank (counts may differ).
 std::vector<double> gatherToAll(const Comm& comm, const std::vector<double>& local);
 

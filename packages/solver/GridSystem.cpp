@@ -225,15 +225,14 @@ Teuchos::RCP<Vector> GridSystem<Dim>::initialGuess() const {
 
 template <int Dim>
 bool GridSystem<Dim>::stressIsAt(const Vector& x) const {
-  int same = 0;
+  bool same = false;
   if (stressX_ && stressX_->getMap()->isSameAs(*x.getMap())) {
     auto now = x.getLocalViewHost(Tpetra::Access::ReadOnly);
     auto then = stressX_->getLocalViewHost(Tpetra::Access::ReadOnly);
     same = std::memcmp(now.data(), then.data(), now.extent(0) * sizeof(double)) == 0;
   }
-  int all = 0;  // every rank takes the same branch: the evaluation is collective
-  Teuchos::reduceAll(*dofs_.ownedMap()->getComm(), Teuchos::REDUCE_MIN, same, Teuchos::outArg(all));
-  return all == 1;
+  // Every rank takes the same branch: the evaluation is collective.
+  return onEveryRank(same, *dofs_.ownedMap()->getComm());
 }
 
 template <int Dim>

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 
-#include <Teuchos_CommHelpers.hpp>
 #include <Thyra_DefaultPreconditioner.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 
+#include "core/Collective.hpp"
 #include "core/Timers.hpp"
 
 namespace impm {
@@ -41,10 +41,11 @@ void ReusingPreconditionerFactory::serveKept(const Tpetra::Operator<double, LO, 
   // Decided on every rank alike: the wrapped preconditioner's applications are collective
   // in another way than the kept one's (Thyra compares the vector spaces).
   auto decoupled = decoupledRowsOf(op);
-  int same = decoupled.rows == builtDecoupled_ ? 1 : 0, everywhere = 0;
   const auto& map = op.getRangeMap();
-  Teuchos::reduceAll(*map->getComm(), Teuchos::REDUCE_MIN, same, Teuchos::outArg(everywhere));
-  serve(everywhere ? kept_ : withDecoupledRows(kept_, map, std::move(decoupled)), prec);
+  serve(onEveryRank(decoupled.rows == builtDecoupled_, *map->getComm())
+            ? kept_
+            : withDecoupledRows(kept_, map, std::move(decoupled)),
+        prec);
 }
 
 void ReusingPreconditionerFactory::serve(const Teuchos::RCP<Thyra::LinearOpBase<double>>& op,

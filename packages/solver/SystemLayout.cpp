@@ -18,12 +18,6 @@ namespace {
 // The largest share of a kept layout's unknowns that may be retired (see covering()).
 constexpr double kMaxRetiredShare = 0.05;
 
-bool onEveryRank(bool mine, const Comm& comm) {
-  int local = mine ? 1 : 0, all = 0;
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, local, Teuchos::outArg(all));
-  return all == 1;
-}
-
 // The nodes the map and the contributions touch and the extra unknowns.  Calls every
 // contribution's prepare(), which the step needs whether or not the layout is reused.
 template <int Dim>
