@@ -100,11 +100,12 @@ Simulation<Dim>::Simulation(const Teuchos::ParameterList& deck, const std::strin
       kinematics_ == Kinematics::updatedLagrangian && comm_->getSize() > 1);
   if (!restartFile.empty())
     restart(restartFile);
-  // A dry build of the first step's system: particles outside the grid, or boundary
-  // conditions on nodes no integration point reaches, are deck errors.
+  // The first step's system, built now: particles outside the grid, or boundary conditions
+  // on nodes no integration point reaches, are deck errors.  The stepper keeps its layout
+  // for the first step.
+  stepper_ = makeStepper();
   try {
-    GridSystem<Dim>(*ownership_, method_, kinematics_, particles_, materials_, conditions_, 0.0,
-                    0.0);
+    stepper_->buildNextSystem();
   } catch (const NumericalError& e) {
     throw InputError("Bodies", e.what());
   }
@@ -432,7 +433,7 @@ std::vector<std::string> Simulation<Dim>::run() {
   if (!restored_)
     balanceAfterStep(0);  // the bodies may lie in some ranks' cells only
   const auto output = startOutput(history);
-  const auto stepper = makeStepper();
+  const auto& stepper = stepper_;
   CheckpointSeries checkpoints(deck_.sublist("Output"), outputDirectory_, prefix_);
   int checkpointed = -1;      // the step of the last checkpoint written
   bool betweenSteps = false;  // the stop came after an accepted step, not inside one

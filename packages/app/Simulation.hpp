@@ -89,6 +89,7 @@ class Simulation {
   std::unique_ptr<LoadBalance<Dim>> loadBalance_;
   RunIdentity identity_;                     // what a checkpoint of this run must match
   std::unique_ptr<RunState<Dim>> restored_;  // the checkpoint's state, on a restart
+  std::unique_ptr<Stepper<Dim>> stepper_;    // made with the first step's system
 };
 
 }  // namespace impm

@@ -39,6 +39,11 @@ class Stepper {
   // of a fixed grid): what a checkpoint writes.
   virtual StepperState checkpointState() const { return accepted_; }
   void restore(const StepperState& state) { state_ = accepted_ = state; }
+  // The system of the next step, built ahead of it (a run's set-up builds it to find deck
+  // errors before anything is written: NumericalError when a particle lies outside the grid
+  // or a boundary condition reaches no integration point).  Its layout stays in the cache,
+  // so the step takes it over unless a repartition came between.  Collective.
+  void buildNextSystem() { buildSystem(state_.time, state_.loadFactor); }
   // How often a step's unknowns and graph were built and reused (with retired nodes).
   const LayoutCache<Dim>& layouts() const { return layouts_; }
 
