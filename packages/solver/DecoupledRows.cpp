@@ -9,14 +9,16 @@ namespace impm {
 namespace {
 
 using Operator = Tpetra::Operator<double, LO, GO, Node>;
+using Space = Thyra::VectorSpaceBase<double>;
 
 class DecoupledRowsOperator : public Operator {
  public:
   DecoupledRowsOperator(Teuchos::RCP<const Thyra::LinearOpBase<double>> kept,
-                        Teuchos::RCP<const Map> map, DecoupledRows decoupled)
+                        Teuchos::RCP<const Map> map, Teuchos::RCP<const Space> space,
+                        DecoupledRows decoupled)
       : kept_(std::move(kept)),
         map_(std::move(map)),
-        space_(Thyra::tpetraVectorSpace<double>(map_)),
+        space_(std::move(space)),
         decoupled_(std::move(decoupled)) {}
 
   Teuchos::RCP<const Map> getDomainMap() const override { return map_; }
@@ -25,7 +27,8 @@ class DecoupledRowsOperator : public Operator {
   // Y = alpha op(X) + beta Y.
   void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode, double alpha,
              double beta) const override {
-    const auto& rows = decoupled_.rows;
+    const auto rows = decoupled_.rows;
+    const auto inverse = decoupled_.inverseDiagonal;
     const std::size_t columns = X.getNumVectors();
     // Work vectors kept between applications: fresh ones cost more than the copies (page
     // faults on every Krylov iteration).
@@ -37,19 +40,25 @@ class DecoupledRowsOperator : public Operator {
     }
     Tpetra::deep_copy(*coupled_, X);
     {
-      auto z = coupled_->getLocalViewHost(Tpetra::Access::ReadWrite);
-      for (std::size_t c = 0; c < columns; ++c)
-        for (LO r : rows)
-          z(r, c) = 0.0;
+      auto z = coupled_->getLocalViewDevice(Tpetra::Access::ReadWrite);
+      Kokkos::parallel_for(
+          "impm::leaveOutDecoupledRows", RangePolicy<DefaultExecSpace>(0, rows.extent(0)),
+          KOKKOS_LAMBDA(const std::size_t k) {
+            for (std::size_t c = 0; c < columns; ++c)
+              z(rows(k), c) = 0.0;
+          });
     }
     Thyra::apply(*kept_, mode == Teuchos::NO_TRANS ? Thyra::NOTRANS : Thyra::TRANS, *coupledThyra_,
                  resultThyra_.ptr());
     {
-      auto y = result_->getLocalViewHost(Tpetra::Access::ReadWrite);
-      auto x = X.getLocalViewHost(Tpetra::Access::ReadOnly);
-      for (std::size_t c = 0; c < columns; ++c)
-        for (std::size_t k = 0; k < rows.size(); ++k)
-          y(rows[k], c) = x(rows[k], c) * decoupled_.inverseDiagonal[k];
+      auto y = result_->getLocalViewDevice(Tpetra::Access::ReadWrite);
+      auto x = X.getLocalViewDevice(Tpetra::Access::ReadOnly);
+      Kokkos::parallel_for(
+          "impm::solveDecoupledRows", RangePolicy<DefaultExecSpace>(0, rows.extent(0)),
+          KOKKOS_LAMBDA(const std::size_t k) {
+            for (std::size_t c = 0; c < columns; ++c)
+              y(rows(k), c) = x(rows(k), c) * inverse(k);
+          });
     }
     Y.update(alpha, *result_, beta);
   }
@@ -57,7 +66,7 @@ class DecoupledRowsOperator : public Operator {
  private:
   Teuchos::RCP<const Thyra::LinearOpBase<double>> kept_;
   Teuchos::RCP<const Map> map_;
-  Teuchos::RCP<const Thyra::VectorSpaceBase<double>> space_;
+  Teuchos::RCP<const Space> space_;
   DecoupledRows decoupled_;
   mutable Teuchos::RCP<MultiVector> coupled_, result_;
   mutable Teuchos::RCP<const Thyra::MultiVectorBase<double>> coupledThyra_;
@@ -67,28 +76,55 @@ class DecoupledRowsOperator : public Operator {
 }  // namespace
 
 DecoupledRows decoupledRows(const CrsMatrix& matrix) {
-  DecoupledRows out;
-  const auto& rowMap = *matrix.getRowMap();
-  const auto& colMap = *matrix.getColMap();
-  CrsMatrix::local_inds_host_view_type columns;
-  CrsMatrix::values_host_view_type values;
-  for (LO r = 0; r < static_cast<LO>(matrix.getNodeNumRows()); ++r) {
-    matrix.getLocalRowView(r, columns, values);
-    const GO self = rowMap.getGlobalElement(r);
+  const auto K = matrix.getLocalMatrixDevice();
+  const auto rowMap = matrix.getRowMap()->getLocalMap();
+  const auto colMap = matrix.getColMap()->getLocalMap();
+  const LO n = static_cast<LO>(matrix.getNodeNumRows());
+  // The diagonal of row r if it is the row's only non-zero value, else 0.
+  auto alone = KOKKOS_LAMBDA(const LO r) {
+    const auto row = K.row(r);
+    const LO self = colMap.getLocalElement(rowMap.getGlobalElement(r));
     double diagonal = 0.0;
-    bool offDiagonal = false;
-    for (std::size_t k = 0; k < columns.extent(0) && !offDiagonal; ++k) {
-      if (colMap.getGlobalElement(columns(k)) == self)
-        diagonal = values(k);
-      else
-        offDiagonal = values(k) != 0.0;
+    for (LO k = 0; k < row.length; ++k) {
+      if (row.colidx(k) == self)
+        diagonal = row.value(k);
+      else if (row.value(k) != 0.0)
+        return 0.0;
     }
-    if (!offDiagonal && diagonal != 0.0) {
-      out.rows.push_back(r);
-      out.inverseDiagonal.push_back(1.0 / diagonal);
-    }
-  }
+    return diagonal;
+  };
+  DecoupledRows out{Kokkos::View<LO*, DefaultMemSpace>("decoupled rows", n),
+                    Kokkos::View<double*, DefaultMemSpace>("inverse diagonals", n)};
+  auto rows = out.rows;
+  auto inverse = out.inverseDiagonal;
+  LO count = 0;
+  Kokkos::parallel_scan(
+      "impm::decoupledRows", RangePolicy<DefaultExecSpace>(0, n),
+      KOKKOS_LAMBDA(const LO r, LO& found, const bool final) {
+        const double diagonal = alone(r);
+        if (diagonal == 0.0)
+          return;
+        if (final) {
+          rows(found) = r;
+          inverse(found) = 1.0 / diagonal;
+        }
+        ++found;
+      },
+      count);
+  Kokkos::resize(out.rows, count);
+  Kokkos::resize(out.inverseDiagonal, count);
   return out;
+}
+
+bool sameRows(const DecoupledRows& a, const DecoupledRows& b) {
+  if (a.rows.extent(0) != b.rows.extent(0))
+    return false;
+  const auto x = a.rows, y = b.rows;
+  LO differ = 0;
+  Kokkos::parallel_reduce(
+      "impm::sameDecoupledRows", RangePolicy<DefaultExecSpace>(0, x.extent(0)),
+      KOKKOS_LAMBDA(const std::size_t k, LO& n) { n += x(k) != y(k) ? 1 : 0; }, differ);
+  return differ == 0;
 }
 
 Teuchos::RCP<Thyra::LinearOpBase<double>> withDecoupledRows(
@@ -96,7 +132,7 @@ Teuchos::RCP<Thyra::LinearOpBase<double>> withDecoupledRows(
     DecoupledRows decoupled) {
   auto space = Thyra::tpetraVectorSpace<double>(map);
   Teuchos::RCP<Operator> op =
-      Teuchos::rcp(new DecoupledRowsOperator(std::move(kept), map, std::move(decoupled)));
+      Teuchos::rcp(new DecoupledRowsOperator(std::move(kept), map, space, std::move(decoupled)));
   return Thyra::tpetraLinearOp<double, LO, GO, Node>(space, space, op);
 }
 

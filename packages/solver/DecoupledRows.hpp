@@ -12,22 +12,24 @@
 // coupled rows only (the decoupled rows' entries of the vector zeroed before it, its output
 // there replaced by the divisions): 23-30 iterations on that column, with no rebuild.
 
-#include <vector>
-
 #include <Thyra_LinearOpBase.hpp>
 
 #include "core/TpetraTypes.hpp"
+#include "core/Types.hpp"
 
 namespace impm {
 
 // The owned rows of a matrix whose only non-zero value is their diagonal, and the inverses
 // of those diagonals (local).
 struct DecoupledRows {
-  std::vector<LO> rows;  // ascending
-  std::vector<double> inverseDiagonal;
+  Kokkos::View<LO*, DefaultMemSpace> rows;  // ascending
+  Kokkos::View<double*, DefaultMemSpace> inverseDiagonal;
 };
 
 DecoupledRows decoupledRows(const CrsMatrix& matrix);
+
+// Whether a and b list the same rows (local).
+bool sameRows(const DecoupledRows& a, const DecoupledRows& b);
 
 // `kept` on the coupled rows, the exact solve on `decoupled` (an operator on `map`).
 Teuchos::RCP<Thyra::LinearOpBase<double>> withDecoupledRows(

@@ -42,7 +42,7 @@ void ReusingPreconditionerFactory::serveKept(const Tpetra::Operator<double, LO, 
   // in another way than the kept one's (Thyra compares the vector spaces).
   auto decoupled = decoupledRowsOf(op);
   const auto& map = op.getRangeMap();
-  serve(onEveryRank(decoupled.rows == builtDecoupled_, *map->getComm())
+  serve(onEveryRank(sameRows(decoupled, builtDecoupled_), *map->getComm())
             ? kept_
             : withDecoupledRows(kept_, map, std::move(decoupled)),
         prec);
@@ -103,7 +103,7 @@ void ReusingPreconditionerFactory::initializePrec(
   }
   kept_ = prec->getNonconstUnspecifiedPrecOp();
   if (muelu_)
-    builtDecoupled_ = decoupledRowsOf(*op).rows;
+    builtDecoupled_ = decoupledRowsOf(*op);
   map_ = map;
   firstIterations_ = -1;
   lastConverged_ = true;

@@ -102,7 +102,7 @@ class ReusingPreconditionerFactory : public Thyra::PreconditionerFactoryBase<dou
   // The operator the inner factory built (served as it is, or wrapped).
   mutable Teuchos::RCP<Thyra::LinearOpBase<double>> kept_;
   // The decoupled rows of the Jacobian it was built from (MueLu's only).
-  mutable std::vector<LO> builtDecoupled_;
+  mutable DecoupledRows builtDecoupled_;
   mutable int firstIterations_ = -1;  // of the first solve after the last build
   mutable int lastIterations_ = 0;
   mutable bool lastConverged_ = true;
