@@ -100,7 +100,7 @@ std::size_t migrateParticles(ParticleSet<Dim>& particles, const std::vector<int>
     auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), view);
     const std::size_t rowBytes = fieldWidth(view) * sizeof(typename View::non_const_value_type);
     const auto recv = exchangeRows(host, rowBytes, sendOrder, sendCount, recvCount, mpi);
-    View fresh = allocateField(spec.name, view, total);
+    View fresh = allocateField(spec.name, view, total, Initialize::no);  // every row copied below
     auto freshHost = Kokkos::create_mirror_view(fresh);
     const char* data = reinterpret_cast<const char*>(host.data());
     const auto source = [&](std::size_t k) {

@@ -130,13 +130,22 @@ class ParticleSet {
   std::vector<std::function<void(ParticleSet&)>> derivations_;
 };
 
-// A new field view of n particles shaped like `view` (the same components).
+// A new field view of n particles shaped like `view` (the same components), zeroed; or, for
+// a view every row of which the caller writes at once, left as the allocator gives it
+// (Initialize::no: the zeroing would be a pass over the field for nothing).
+enum class Initialize { zero, no };
 template <class View>
-View allocateField(const std::string& label, const View& like, std::size_t n) {
-  if constexpr (View::rank_dynamic == 2)  // a declared table: (particle, component)
-    return View(label, n, like.extent(1));
-  else
-    return View(label, n);
+View allocateField(const std::string& label, const View& like, std::size_t n,
+                   Initialize initialize = Initialize::zero) {
+  const auto make = [&](const auto& alloc) {
+    if constexpr (View::rank_dynamic == 2)  // a declared table: (particle, component)
+      return View(alloc, n, like.extent(1));
+    else
+      return View(alloc, n);
+  };
+  return initialize == Initialize::zero
+             ? make(Kokkos::view_alloc(label))
+             : make(Kokkos::view_alloc(label, Kokkos::WithoutInitializing));
 }
 
 // Component c of particle p of a field, as a double (host views: output and checkpoints).
