@@ -25,7 +25,6 @@
 #include "io/InputDeck.hpp"
 #include "material/MaterialFactory.hpp"
 #include "solver/DynamicStepper.hpp"
-#include "solver/GridSystem.hpp"
 #include "solver/QuasiStaticStepper.hpp"
 
 namespace impm {
@@ -433,13 +432,12 @@ std::vector<std::string> Simulation<Dim>::run() {
   if (!restored_)
     balanceAfterStep(0);  // the bodies may lie in some ranks' cells only
   const auto output = startOutput(history);
-  const auto& stepper = stepper_;
   CheckpointSeries checkpoints(deck_.sublist("Output"), outputDirectory_, prefix_);
   int checkpointed = -1;      // the step of the last checkpoint written
   bool betweenSteps = false;  // the stop came after an accepted step, not inside one
-  double finalTime = stepper->state().time;
+  double finalTime = stepper_->state().time;
   progress_ = std::make_unique<ProgressLog>(
-      verbosity_, progressFraction(stepper->state().time, stepper->state().loadFactor));
+      verbosity_, progressFraction(stepper_->state().time, stepper_->state().loadFactor));
   const StepCallback<Dim> onStep = [&](const StepRecord& r, const StepGrid<Dim>& step) {
     gridFields_->update(step);
     const auto F = reactions();
@@ -453,7 +451,7 @@ std::vector<std::string> Simulation<Dim>::run() {
     }
     if (checkpoints.due(r.step, r.last)) {
       particles_.updateDerived();  // the drawn domains, as the outputs have them
-      writeCheckpoint(checkpoints, r.step, *stepper, *output);
+      writeCheckpoint(checkpoints, r.step, *stepper_, *output);
       checkpointed = r.step;
     }
     finalTime = r.time;
@@ -463,18 +461,18 @@ std::vector<std::string> Simulation<Dim>::run() {
     }
   };
   try {
-    stepper->run(onStep);
+    stepper_->run(onStep);
   } catch (const StopRequest&) {
     // After an accepted step, or in the middle of one (abandoned: nothing of it was
     // committed): the checkpoint is of the last accepted step.
-    const auto& state = stepper->state();
+    const auto& state = stepper_->state();
     if (checkpointed != state.step) {
       particles_.updateDerived();
-      writeCheckpoint(checkpoints, state.step, *stepper, *output);
+      writeCheckpoint(checkpoints, state.step, *stepper_, *output);
     }
     throw RunStopped(state.step, state.time, !betweenSteps, checkpoints.pathOf(state.step));
   }
-  return finish(finalTime, output->files(), stepper->layouts());
+  return finish(finalTime, output->files(), stepper_->layouts());
 }
 
 template <int Dim>
