@@ -226,8 +226,7 @@ void Simulation<Dim>::balanceAfterStep(int step) {
 }
 
 template <int Dim>
-void Simulation<Dim>::writeCheckpoint(CheckpointSeries& series, int step,
-                                      const Stepper<Dim>& stepper,
+void Simulation<Dim>::writeCheckpoint(CheckpointSeries& series, int step, Stepper<Dim>& stepper,
                                       const Output<Dim>& output) const {
   IMPM_TIMER("checkpoint");
   RunState<Dim> state{stepper.checkpointState(), {}, output.exodusSteps(), {}};
@@ -239,7 +238,7 @@ void Simulation<Dim>::writeCheckpoint(CheckpointSeries& series, int step,
                              gridFields_->values());
   if (comm_->getRank() == 0)
     series.written(step);
-  newton_->forgetPreconditioner();
+  stepper.forgetCaches();
 }
 
 constexpr GlobalId smallGridNodes = 4000;  // below: the small-system default (ILUT)

@@ -51,7 +51,7 @@ class Simulation {
   void balanceAfterStep(int step);
   void addDerivedFields();
   // Collective; rank 0 then updates the series (the newest link, the oldest removed).
-  void writeCheckpoint(CheckpointSeries& series, int step, const Stepper<Dim>& stepper,
+  void writeCheckpoint(CheckpointSeries& series, int step, Stepper<Dim>& stepper,
                        const Output<Dim>& output) const;
   // The output files (continued on a restart) with the initial state written (not on one).
   std::unique_ptr<Output<Dim>> startOutput(const History<Dim>& history);

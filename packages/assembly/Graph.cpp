@@ -10,15 +10,23 @@
 namespace impm {
 namespace {
 
+// Groups of nodes by the overlap index of their first DOF: group k is
+// nodes[start[k] ... start[k + 1]).
+struct NodeGroups {
+  std::vector<std::size_t> start;
+  std::vector<LO> nodes;
+};
+
 // The local columns of every row of the overlap map, from the particle-grid map and the
 // extra couplings.  Node couplings are kept once per node, in one flat array, and expanded
 // into a row's DOF columns when asked for.
 template <int Dim>
 class RowColumns {
  public:
+  // `patches`: groups of nodes (overlap indices of their first DOFs) coupled as a particle's.
   RowColumns(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryDofs,
              const Map& overlap, const std::vector<std::pair<GO, GO>>& extraCouplings,
-             NodeCoupling coupling)
+             NodeCoupling coupling, const NodeGroups& patches)
       : numRows_(overlap.getNodeNumElements()),
         nodeStart_(numRows_ + 1, 0),
         nodeOfRow_(numRows_, -1),
@@ -26,7 +34,7 @@ class RowColumns {
     if (coupling == NodeCoupling::self)
       coupleNodesWithThemselves(entryDofs);
     else
-      coupleNodes(map, entryDofs);
+      coupleNodes(map, entryDofs, patches);
     for (std::size_t r = 0; r < numRows_; ++r)
       if (nodeStart_[r + 1] > nodeStart_[r])
         for (int a = 0; a < Dim; ++a)
@@ -67,30 +75,43 @@ class RowColumns {
   // it, sorted, at nodeColumns_[nodeStart_[r] ...].  Through the transpose of Y (the
   // particles touching each node); a node already listed for r is marked with r, so only
   // the unique ones are sorted.
-  void coupleNodes(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryDofs) {
+  // The patches count as particles numbered after the map's.
+  void coupleNodes(const ParticleGridMap<Dim>& map, const Kokkos::View<LO*>& entryDofs,
+                   const NodeGroups& patches) {
     auto rowPtr = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), map.rowPtr);
     auto lid = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), entryDofs);
+    const std::size_t particles = map.numParticles();
+    const auto forNodesOf = [&](std::size_t p, auto&& f) {
+      if (p < particles)
+        for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k)
+          f(lid(k));
+      else
+        for (std::size_t k = patches.start[p - particles]; k < patches.start[p - particles + 1];
+             ++k)
+          f(patches.nodes[k]);
+    };
+    const std::size_t groups = particles + patches.start.size() - 1;
     std::vector<std::size_t> start(numRows_ + 1, 0);
-    for (std::size_t k = 0; k < lid.extent(0); ++k)
-      ++start[lid(k) + 1];
+    for (std::size_t p = 0; p < groups; ++p)
+      forNodesOf(p, [&](LO node) { ++start[node + 1]; });
     for (std::size_t r = 0; r < numRows_; ++r)
       start[r + 1] += start[r];
     std::vector<std::size_t> fill(start.begin(), start.end() - 1);
     std::vector<std::size_t> particlesOf(start.back());
-    for (std::size_t p = 0; p < map.numParticles(); ++p)
-      for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k)
-        particlesOf[fill[lid(k)]++] = p;
+    for (std::size_t p = 0; p < groups; ++p)
+      forNodesOf(p, [&](LO node) { particlesOf[fill[node]++] = p; });
 
     nodeColumns_.reserve(start.back() * 2);
     std::vector<std::size_t> listedFor(numRows_, numRows_);
     for (std::size_t r = 0; r < numRows_; ++r) {
       const std::size_t first = nodeColumns_.size();
       for (std::size_t q = start[r]; q < start[r + 1]; ++q)
-        for (std::size_t k = rowPtr(particlesOf[q]); k < rowPtr(particlesOf[q] + 1); ++k)
-          if (listedFor[lid(k)] != r) {
-            listedFor[lid(k)] = r;
-            nodeColumns_.push_back(lid(k));
+        forNodesOf(particlesOf[q], [&](LO node) {
+          if (listedFor[node] != r) {
+            listedFor[node] = r;
+            nodeColumns_.push_back(node);
           }
+        });
       std::sort(nodeColumns_.begin() + first, nodeColumns_.end());
       nodeStart_[r + 1] = nodeColumns_.size();
     }
@@ -160,7 +181,10 @@ Teuchos::RCP<FECrsGraph> buildGraph(const ParticleGridMap<Dim>& map,
                                     const std::vector<std::pair<GO, GO>>& extraCouplings,
                                     NodeCoupling coupling, NodeAdjacency* adjacency) {
   const auto& overlap = *dofs.overlapMap();
-  RowColumns<Dim> columns(map, entryDofs, overlap, extraCouplings, coupling);
+  NodeGroups patches{dofs.haloPatchStart(), {}};
+  for (const GlobalId node : dofs.haloPatchNodes())
+    patches.nodes.push_back(overlap.getLocalElement(dofs.nodeDof(node, 0)));
+  RowColumns<Dim> columns(map, entryDofs, overlap, extraCouplings, coupling, patches);
   Kokkos::DualView<std::size_t*, FECrsGraph::device_type> counts("row counts", columns.numRows());
   // Each row is expanded twice (here for its length, below for its columns) rather than
   // kept: all rows at once would hold the whole graph again (some 400 MB at 10^6 particles).

@@ -7,6 +7,8 @@
 // its order, then those that other ranks' shared rows will bring (exchanged ahead of the
 // rows).  The FECrsGraph then exports shared rows to their owners.  An overlap-map index is
 // thus also the column index of the same unknown, which the assembly kernels rely on.
+// Where the overlap map holds a halo (core/DofMap.hpp), its patches are coupled as a
+// particle's nodes are, so that a particle crossing a rank boundary later finds its entries.
 // An explicit step with the lumped mass couples each node with itself only (its Jacobian's
 // nodal block is diagonal): its graph is then the nodes' own blocks and the boundary
 // couplings, a few entries per row instead of all the node pairs of the particles.

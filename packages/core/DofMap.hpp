@@ -9,7 +9,14 @@
 // placed right after the DOFs of its anchor node; keeping a boundary force next to the
 // nodes it acts on keeps incomplete factorisations (ILU) close to exact.
 // The overlap map is the owned map followed by the other DOFs this rank's contributions
-// reach, as Tpetra's FE assembly requires.
+// reach, as Tpetra's FE assembly requires; asked to (OverlapHalo::neighbours), also the DOFs
+// of the grid neighbours of those nodes that other ranks own and hold as unknowns.  Such a
+// halo holds no entry of this step's particles; with it come its patches, the overlap nodes
+// of the 2^Dim cells around each halo node (what one particle spanning up to two cells along
+// each axis can touch there), which the graph couples as it couples a particle's nodes
+// (assembly/Graph.hpp).  A layout kept for later steps (solver/SystemLayout.hpp) then still
+// serves when a particle crosses a rank boundary and reaches one node further: a compressed
+// column on two ranks built its layout anew for that in 17 of its 40 load steps.
 //
 // A rank that would own no unknown (no particle near its part of the grid) owns padding
 // unknowns instead, fixed at zero by the grid system: Dim of them, numbered as the components
@@ -30,6 +37,9 @@ namespace impm {
 // Leaves the distinct ids of v, ascending.
 void sortUnique(std::vector<GlobalId>& v);
 
+// Whether the overlap map adds the neighbours of this rank's nodes that other ranks hold.
+enum class OverlapHalo { none, neighbours };
+
 // An extra unknown, owned by the rank that owns its anchor node.
 struct ExtraDof {
   GlobalId anchorNode;
@@ -39,9 +49,9 @@ template <int Dim>
 class DofMap {
  public:
   // Collective.  `touched`: the grid nodes this rank's contributions reach (any order,
-  // repeats allowed).  `extras`: the same list on every rank.
+  // repeats allowed).  `extras`: the same list on every rank.  `halo`: the same on every rank.
   DofMap(const NodeOwnership<Dim>& ownership, std::vector<GlobalId> touched,
-         const std::vector<ExtraDof>& extras);
+         const std::vector<ExtraDof>& extras, OverlapHalo halo = OverlapHalo::none);
 
   const Teuchos::RCP<const Map>& ownedMap() const { return owned_; }
   const Teuchos::RCP<const Map>& overlapMap() const { return overlap_; }
@@ -56,13 +66,23 @@ class DofMap {
   // Active nodes owned by this rank, ascending.
   const std::vector<GlobalId>& ownedActiveNodes() const { return ownedActive_; }
   GlobalId numActiveNodes() const { return numActiveNodes_; }
+  // The halo's patches (OverlapHalo::neighbours, several ranks): patch k's nodes are
+  // haloPatchNodes()[haloPatchStart()[k] ... haloPatchStart()[k + 1]).
+  const std::vector<std::size_t>& haloPatchStart() const { return haloPatchStart_; }
+  const std::vector<GlobalId>& haloPatchNodes() const { return haloPatchNodes_; }
 
  private:
+  // The patches of the halo nodes (see above); `touched` and `haloNodes` ascending.
+  void addHaloPatches(const GridGeometry<Dim>& grid, const std::vector<GlobalId>& touched,
+                      const std::vector<GlobalId>& haloNodes);
+
   GlobalId numNodes_;
   int numExtras_;
   std::vector<GlobalId> ownedActive_;
   GlobalId numActiveNodes_ = 0;
   std::vector<GO> padding_;
+  std::vector<std::size_t> haloPatchStart_{0};
+  std::vector<GlobalId> haloPatchNodes_;
   Teuchos::RCP<const Map> owned_, overlap_;
 };
 

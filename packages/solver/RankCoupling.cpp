@@ -35,12 +35,19 @@ std::vector<GO> unionOverRanks(const Comm& comm, const std::vector<GO>& mine) {
 RankCoupling::RankCoupling(const CrsMatrix& A, const std::vector<LO>& rowOfColumn,
                            const LocalSolve& solve)
     : comm_(A.getComm()), n_(static_cast<int>(A.getRowMap()->getNodeNumElements())) {
-  // The columns of other ranks' unknowns that this rank's rows hold: one spike each.
+  // The columns of other ranks' unknowns in which this rank's rows hold non-zero entries:
+  // one spike each.  (A graph may hold entries no particle fills: the halo's patches,
+  // core/DofMap.hpp.  A zero column's spike is zero.)
   const Map& columns = *A.getColMap();
+  const auto local = A.getLocalMatrixHost();
+  std::vector<char> held(rowOfColumn.size(), 0);
+  for (std::size_t k = 0; k < local.values.extent(0); ++k)
+    if (local.values(k) != 0.0)
+      held[local.graph.entries(k)] = 1;
   std::vector<int> spikeOf(rowOfColumn.size(), -1);
   std::vector<GO> coupled;
   for (std::size_t c = 0; c < rowOfColumn.size(); ++c)
-    if (rowOfColumn[c] < 0) {
+    if (rowOfColumn[c] < 0 && held[c]) {
       spikeOf[c] = static_cast<int>(coupled.size());
       coupled.push_back(columns.getGlobalElement(static_cast<LO>(c)));
     }
@@ -55,7 +62,6 @@ RankCoupling::RankCoupling(const CrsMatrix& A, const std::vector<LO>& rowOfColum
   // S = D^-1 U on this rank's rows.
   const int spikes = static_cast<int>(coupled.size());
   spikes_.assign(static_cast<std::size_t>(n_) * spikes, 0.0);
-  const auto local = A.getLocalMatrixHost();
   for (int i = 0; i < n_; ++i)
     for (auto k = local.graph.row_map(i); k < local.graph.row_map(i + 1); ++k)
       if (const int s = spikeOf[local.graph.entries(k)]; s >= 0)

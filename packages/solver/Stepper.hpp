@@ -44,6 +44,13 @@ class Stepper {
   // or a boundary condition reaches no integration point).  Its layout stays in the cache,
   // so the step takes it over unless a repartition came between.  Collective.
   void buildNextSystem() { buildSystem(state_.time, state_.loadFactor); }
+  // The next step builds its layout and preconditioner from scratch (at checkpoints: both
+  // are caches, and a restarted run starts without them; a kept layout that covers the next
+  // map is not the layout built for it, nor is its halo, core/DofMap.hpp).
+  void forgetCaches() {
+    layouts_.forget();
+    setup_.newton.forgetPreconditioner();
+  }
   // How often a step's unknowns and graph were built and reused (with retired nodes).
   const LayoutCache<Dim>& layouts() const { return layouts_; }
 

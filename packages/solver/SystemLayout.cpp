@@ -116,7 +116,7 @@ template <int Dim>
 Numbered<Dim> numberUnknowns(const NodeOwnership<Dim>& ownership, const ParticleGridMap<Dim>& map,
                              std::vector<int> firstExtra, std::vector<GlobalId> touched,
                              const std::vector<ExtraDof>& extras, NodeCoupling coupling,
-                             const std::vector<GlobalId>& kept) {
+                             const std::vector<GlobalId>& kept, OverlapHalo halo) {
   // The contributions' nodes follow the map's entries' in `touched` (keyOf; kept nodes come
   // only with shared coupling, whose key lists every entry's node).
   std::vector<GlobalId> contributionNodes;
@@ -126,7 +126,7 @@ Numbered<Dim> numberUnknowns(const NodeOwnership<Dim>& ownership, const Particle
   }
   touched.insert(touched.end(), kept.begin(), kept.end());
   auto l = std::make_shared<SystemLayout<Dim>>(
-      std::move(firstExtra), DofMap<Dim>(ownership, std::move(touched), extras), coupling);
+      std::move(firstExtra), DofMap<Dim>(ownership, std::move(touched), extras, halo), coupling);
   const auto& dofs = l->dofs;
   // A failure on one rank must stop every rank (the next steps are collective).
   EntryDofs<> entries;
@@ -262,12 +262,17 @@ bool LayoutCache<Dim>::sameCouplings(const std::vector<std::pair<GO, GO>>& coupl
 }
 
 template <int Dim>
-void LayoutCache<Dim>::newUnknowns(const Map& owned) {
+void LayoutCache<Dim>::forget() {
   key_ = LayoutKey<Dim>{};
   layout_.reset();
   entries_ = EntryDofs<>();
   retired_.clear();
   anyRetired_ = false;
+}
+
+template <int Dim>
+void LayoutCache<Dim>::newUnknowns(const Map& owned) {
+  forget();
   if (onNewUnknowns_)
     onNewUnknowns_(owned);
 }
@@ -301,13 +306,16 @@ LaidOut<Dim> layoutOf(const LayoutInputs<Dim>& in, LayoutCache<Dim>& cache) {
   if (kept) {
     out = *kept;
   } else {
+    // A layout that may cover later steps' maps takes the nodes just across the rank
+    // boundaries into its overlap, for the particles that cross them (core/DofMap.hpp).
+    const auto halo = cache.allowsRetired() ? OverlapHalo::neighbours : OverlapHalo::none;
     auto numbered = numberUnknowns(in.ownership, in.map, firstExtra, key.touched, extras,
-                                   in.coupling, cache.nodesToKeep(key, comm));
+                                   in.coupling, cache.nodesToKeep(key, comm), halo);
     auto [beyond, any] =
         retiredBeyondShareAndAny(numbered.retired, *numbered.layout->dofs.ownedMap());
     if (beyond) {
-      numbered =
-          numberUnknowns(in.ownership, in.map, firstExtra, key.touched, extras, in.coupling, {});
+      numbered = numberUnknowns(in.ownership, in.map, firstExtra, key.touched, extras, in.coupling,
+                                {}, halo);
       any = false;
     }
     cache.newUnknowns(*numbered.layout->dofs.ownedMap());

@@ -112,6 +112,8 @@ class LayoutCache {
   // New unknowns were numbered: the kept layout cannot serve them, so it goes before the
   // new graph is built, and the callback is told.  Collective.
   void newUnknowns(const Map& owned);
+  // Drops the kept layout: the next system builds its own.
+  void forget();
   // Told when a kept layout serves with retired nodes, before the step's matrix is made:
   // a stepper whose preconditioner does not serve retired nodes frees it, as it does for
   // new unknowns.  A factorisation built while the retired nodes were active, whose rows
@@ -133,6 +135,7 @@ class LayoutCache {
   const std::vector<GlobalId>& nodesToKeep(const LayoutKey<Dim>& key, const Comm& comm) const;
 
   bool enabled() const { return enabled_; }
+  bool allowsRetired() const { return allowRetired_; }
   int built() const { return built_; }
   int reused() const { return reused_; }
   // Of the reuses, those with retired nodes.

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <set>
 
 #include <Teuchos_DefaultComm.hpp>
@@ -192,6 +193,64 @@ TEST(DofMap, RepeatedTouchedNodesInAnyOrderAreOneUnknownEach) {
     const auto owned = dofs.ownedMap()->getNodeElementList();
     EXPECT_TRUE(std::is_sorted(owned.begin(), owned.end()));
   }
+}
+
+// With OverlapHalo::neighbours the overlap map adds the grid neighbours of a rank's nodes
+// that another rank owns and holds as unknowns (and no others), and lists patches of
+// overlap nodes around them for the graph; on one rank there is no halo.
+TEST(DofMap, HaloAddsNeighboursOtherRanksHold) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  NodeOwnership<1> own(makeGridGeometry<1>({0.0}, {1.0}, {10}), comm);
+  const int rank = comm->getRank();
+  // Every rank touches the nodes 2..8 that it owns: those are the active ones.
+  std::vector<GlobalId> touched;
+  for (GlobalId node = 2; node <= 8; ++node)
+    if (own.ownerOfNode(node) == rank)
+      touched.push_back(node);
+  std::set<GlobalId> expected(touched.begin(), touched.end()), halo;
+  for (GlobalId node : touched)
+    for (GlobalId next : {node - 1, node + 1})
+      if (next >= 2 && next <= 8 && own.ownerOfNode(next) != rank)
+        halo.insert(next);
+  expected.insert(halo.begin(), halo.end());
+
+  DofMap<1> plain(own, touched, {});
+  const auto plainOverlap = plain.overlapMap()->getNodeElementList();
+  EXPECT_EQ(std::set<GlobalId>(plainOverlap.begin(), plainOverlap.end()),
+            std::set<GlobalId>(touched.begin(), touched.end()));
+  EXPECT_EQ(plain.haloPatchStart().size(), 1u);
+
+  DofMap<1> dofs(own, touched, {}, OverlapHalo::neighbours);
+  EXPECT_EQ(dofs.numActiveNodes(), 7);
+  const auto overlap = dofs.overlapMap()->getNodeElementList();
+  EXPECT_EQ(std::set<GlobalId>(overlap.begin(), overlap.end()), expected);
+  EXPECT_EQ(overlap.size(), expected.size());
+  if (comm->getSize() > 1) {
+    EXPECT_FALSE(halo.empty());
+  }
+  // Each patch holds overlap nodes within two cells, one of them a halo node; together they
+  // pair every halo node with every overlap node within two cells of it.
+  const auto& start = dofs.haloPatchStart();
+  const auto& nodes = dofs.haloPatchNodes();
+  std::set<std::pair<GlobalId, GlobalId>> paired;
+  for (std::size_t k = 0; k + 1 < start.size(); ++k) {
+    const std::vector<GlobalId> patch(nodes.begin() + start[k], nodes.begin() + start[k + 1]);
+    ASSERT_FALSE(patch.empty());
+    EXPECT_LE(*std::max_element(patch.begin(), patch.end()) -
+                  *std::min_element(patch.begin(), patch.end()),
+              2);
+    EXPECT_TRUE(std::any_of(patch.begin(), patch.end(), [&](GlobalId n) { return halo.count(n); }));
+    for (GlobalId a : patch) {
+      EXPECT_TRUE(expected.count(a));
+      for (GlobalId b : patch)
+        paired.emplace(a, b);
+    }
+  }
+  for (GlobalId h : halo)
+    for (GlobalId n : expected)
+      if (std::abs(n - h) <= 2) {
+        EXPECT_TRUE(paired.count({h, n})) << "halo node " << h << " and node " << n;
+      }
 }
 
 TEST(Collective, AFailureOnOneRankStopsEveryRank) {
