@@ -308,6 +308,8 @@ LaidOut<Dim> layoutOf(const LayoutInputs<Dim>& in, LayoutCache<Dim>& cache) {
   } else {
     // A layout that may cover later steps' maps takes the nodes just across the rank
     // boundaries into its overlap, for the particles that cross them (core/DofMap.hpp).
+    // Also with Graph Reuse off, where nothing is kept: the two then build the same
+    // overlap maps and column orders, so their answers stay the same bit for bit.
     const auto halo = cache.allowsRetired() ? OverlapHalo::neighbours : OverlapHalo::none;
     auto numbered = numberUnknowns(in.ownership, in.map, firstExtra, key.touched, extras,
                                    in.coupling, cache.nodesToKeep(key, comm), halo);
