@@ -73,6 +73,37 @@ def run_impm(impm, deck, sets, np=1, history=True, timeout=None):
     return Run(wall, int(rss) / 1024.0, timers, rows, rms.group(1) if rms else None, calls)
 
 
+def core_speeds(impm, repeat=2):
+    """The wall time [s] of one small run (the Hencky column at 1 x 4096 cells, one rank)
+    pinned to each core this process may use, the fastest of `repeat` on each.  On a shared
+    machine the cores' speeds can differ for hours, and a run on several ranks goes at its
+    slowest rank's pace: a speed-up over ranks measured then says more of the cores than of
+    impm."""
+    deck = os.path.join(ROOT, "input", "column_hencky.xml")
+    out = tempfile.mkdtemp(prefix="impm-bench-")
+    cmd = [impm, "--output-dir", out, "--set", "Grid/Cells={1,4096}", "--set",
+           "Output/Exodus=false", "--set", "Output/CSV=false", deck]
+    times = {}
+    for core in sorted(os.sched_getaffinity(0)):
+        best = float("inf")
+        for _ in range(repeat):
+            start = time.perf_counter()
+            subprocess.run(cmd, capture_output=True, check=True,
+                           preexec_fn=lambda c=core: os.sched_setaffinity(0, {c}))
+            best = min(best, time.perf_counter() - start)
+        times[core] = best
+    shutil.rmtree(out)
+    return times
+
+
+def core_speeds_line(times):
+    """One line for a benchmark's report: each core's time and the slowest over the fastest."""
+    each = ", ".join("core %d %.2f s" % (c, t) for c, t in sorted(times.items()))
+    return ("each core's time on the Hencky column at 1 x 4096 cells (one rank pinned to it, "
+            "the fastest of 2): %s; slowest over fastest %.2f." % (each, max(times.values()) /
+                                                                    min(times.values())))
+
+
 def median_run(runs, key):
     return statistics.median(key(r) for r in runs)
 

@@ -10,7 +10,9 @@ with preconditioner reuse), the same without reuse, the same with GMRES, Ifpack2
 (median of --repeat runs, configurations alternating), the Newton solve time, Krylov
 iterations per load step, peak memory (largest process) and per particle, and the RMS
 displacement error against the deck's neo-Hookean exact solution (linear elasticity differs
-from it by about 1e-2: the check is that every solver gives the same figure).
+from it by about 1e-2: the check is that every solver gives the same figure).  On several
+rank counts, before and after the runs, each core's speed on one small run (a run on several
+ranks goes at its slowest core's pace).
 
 usage: column_grid.py --impm build/drivers/impm [--grids 32x256 64x512] [--repeat 3]
                       [--configs default ...] [--ranks 1 2] [--write doc/performance.md]
@@ -20,7 +22,7 @@ import argparse
 import os
 import statistics
 
-from benchlib import ROOT, run_impm, write_section
+from benchlib import ROOT, core_speeds, core_speeds_line, run_impm, write_section
 
 DECK = os.path.join(ROOT, "input", "column_self_weight.xml")
 LS = "Solver/Linear Solver/"
@@ -61,6 +63,10 @@ def main():
     lines = ["| grid (particles) | solver | ranks | wall [s] | Newton solve [s] | Krylov per step "
              "| memory [MB] | per particle [kB] | RMS error |",
              "|---|---|---|---|---|---|---|---|---|"]
+    several = max(args.ranks) > 1
+    if several:
+        cores_before = core_speeds(args.impm)
+        print(core_speeds_line(cores_before), flush=True)
     for grid in args.grids:
         nx, ny = (int(v) for v in grid.split("x"))
         particles = 4 * nx * ny
@@ -83,6 +89,10 @@ def main():
                 statistics.median(r.timer("Newton solve") for r in rs), krylov, memory,
                 memory * 1024.0 / particles * np, rs[0].rms))
             print(lines[-1], flush=True)
+    if several:
+        lines += ["", "Before the runs, " + core_speeds_line(cores_before),
+                  "after them, " + core_speeds_line(core_speeds(args.impm))]
+        print("\n".join(lines[-2:]), flush=True)
     if args.write:
         write_section(args.write, "column-grid", "\n".join(lines) + "\n")
 

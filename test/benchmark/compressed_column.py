@@ -5,7 +5,9 @@ cells compresses to about a third of its height, so a fixed split of the cells l
 particle on one rank from the 20th load step; the cells are repartitioned by their particles
 (Load Balance).  Wall time (medians of alternating runs), the slowest rank's Newton solve and
 repartition timers, the repartitions and the speed-up, with Repartition on and off, and with
-the deck's banded LU exact across the ranks (its default) or block Jacobi.
+the deck's banded LU exact across the ranks (its default) or block Jacobi.  Before and
+after the runs, each core's speed on one small run (a 2-rank run goes at its slower core's
+pace).
 
 usage: compressed_column.py --impm build/drivers/impm [--cells 65536] [--repeat 3]
                             [--write doc/performance.md]
@@ -15,7 +17,7 @@ import argparse
 import re
 import statistics
 
-from benchlib import ROOT, run_impm, write_section
+from benchlib import ROOT, core_speeds, core_speeds_line, run_impm, write_section
 import os
 
 DECK = os.path.join(ROOT, "input", "column_hencky.xml")
@@ -33,6 +35,8 @@ def main():
     cases = [(1, True, "exact"), (2, True, "exact"), (2, False, "exact"),
              (2, True, "block Jacobi")]
     runs = {c: [] for c in cases}
+    cores_before = core_speeds(args.impm)
+    print(core_speeds_line(cores_before), flush=True)
     for _ in range(args.repeat):  # alternating, so that the machine's drift hits every case
         for case in cases:
             np, balance, across = case
@@ -59,6 +63,9 @@ def main():
             statistics.median(r.timer("repartition") for r in rs),
             statistics.median(r.memory for r in rs)))
         print(lines[-1], flush=True)
+    lines += ["", "Before the runs, " + core_speeds_line(cores_before),
+              "after them, " + core_speeds_line(core_speeds(args.impm))]
+    print("\n".join(lines[-2:]), flush=True)
     if args.write:
         write_section(args.write, "compressed-column", "\n".join(lines) + "\n")
 
