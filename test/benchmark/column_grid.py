@@ -66,7 +66,7 @@ def main():
     several = max(args.ranks) > 1
     if several:
         cores_before = core_speeds(args.impm)
-        print(core_speeds_line(cores_before), flush=True)
+        print("Before the runs, " + core_speeds_line(cores_before), flush=True)
     for grid in args.grids:
         nx, ny = (int(v) for v in grid.split("x"))
         particles = 4 * nx * ny

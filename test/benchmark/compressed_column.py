@@ -36,7 +36,7 @@ def main():
              (2, True, "block Jacobi")]
     runs = {c: [] for c in cases}
     cores_before = core_speeds(args.impm)
-    print(core_speeds_line(cores_before), flush=True)
+    print("Before the runs, " + core_speeds_line(cores_before), flush=True)
     for _ in range(args.repeat):  # alternating, so that the machine's drift hits every case
         for case in cases:
             np, balance, across = case
