@@ -88,16 +88,13 @@ void ElasticLaw1D<Law>::firstPiola(const Evaluation& at, Tensors& P, Tangents& A
 
 template <class Law>
 void ElasticLaw1D<Law>::energyDensity(const Evaluation& at, Scalars& W) const {
-  const auto members = at.members;
   const auto F = at.F;
   const ParameterTables<1> parameters(at.variables);
-  Kokkos::parallel_for(
-      "impm::ElasticLaw1D::energy", RangePolicy<ExecutionSpace>(0, members.extent(0)),
-      KOKKOS_LAMBDA(const int i) {
-        const int p = members(i);
+  setForMembers<ExecutionSpace>(
+      "impm::ElasticLaw1D::energy", at.members, W, KOKKOS_LAMBDA(const int p) {
         double k[kMaxLawParameters];
         parameters.at(p, k);
-        W(p) = Law::evaluate(F(p, 0, 0), k).W;
+        return Law::evaluate(F(p, 0, 0), k).W;
       });
 }
 

@@ -112,43 +112,33 @@ void FiniteStrainPlasticity<Law>::firstPiola(const Evaluation& at, Tensors& P, T
 
 template <class Law>
 void FiniteStrainPlasticity<Law>::energyDensity(const Evaluation& at, Scalars& W) const {
-  const auto members = at.members;
   const auto F = at.F;
   const StateTables n = committed(at);
   const Parameters k = parameters_;
-  Kokkos::parallel_for(
-      "impm::FiniteStrainPlasticity::energy", RangePolicy<ExecutionSpace>(0, members.extent(0)),
-      KOKKOS_LAMBDA(const int i) {
-        const int p = members(i);
-        W(p) = henckyEnergy(elasticStrain(F, n, p), k.mu, k.lambda) +
+  setForMembers<ExecutionSpace>(
+      "impm::FiniteStrainPlasticity::energy", at.members, W, KOKKOS_LAMBDA(const int p) {
+        return henckyEnergy(elasticStrain(F, n, p), k.mu, k.lambda) +
                Law::hardeningEnergy(n.alpha(p, 0), k);
       });
 }
 
 template <class Law>
 void FiniteStrainPlasticity<Law>::dissipationDensity(const Evaluation& at, Scalars& D) const {
-  const auto members = at.members;
   const StateTables n = committed(at);
-  Kokkos::parallel_for(
-      "impm::FiniteStrainPlasticity::dissipation",
-      RangePolicy<ExecutionSpace>(0, members.extent(0)), KOKKOS_LAMBDA(const int i) {
-        const int p = members(i);
-        D(p) = n.dissipation(p, 0);
-      });
+  setForMembers<ExecutionSpace>(
+      "impm::FiniteStrainPlasticity::dissipation", at.members, D,
+      KOKKOS_LAMBDA(const int p) { return n.dissipation(p, 0); });
 }
 
 template <class Law>
 void FiniteStrainPlasticity<Law>::outOfPlaneStress(const Evaluation& at, Scalars& stressZZ) const {
-  const auto members = at.members;
   const auto F = at.F;
   const StateTables n = committed(at);
   const Parameters k = parameters_;
-  Kokkos::parallel_for(
-      "impm::FiniteStrainPlasticity::stressZZ", RangePolicy<ExecutionSpace>(0, members.extent(0)),
-      KOKKOS_LAMBDA(const int i) {
-        const int p = members(i);
+  setForMembers<ExecutionSpace>(
+      "impm::FiniteStrainPlasticity::stressZZ", at.members, stressZZ, KOKKOS_LAMBDA(const int p) {
         const double tauZZ = henckyStress(elasticStrain(F, n, p), k.mu, k.lambda).zz;
-        stressZZ(p) = tauZZ / determinant<2>(F, p);
+        return tauZZ / determinant<2>(F, p);
       });
 }
 

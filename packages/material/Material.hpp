@@ -105,6 +105,19 @@ class Material {
   double density_;
 };
 
+// out(p) = value(p) for the evaluated particles p = members(i): the kernel of every
+// per-particle scalar a law reports (its energy, its dissipation, sigma_zz), value being the
+// law's own formula.
+template <class Space, class Members, class Scalars, class Value>
+void setForMembers(const char* label, const Members& members, const Scalars& out,
+                   const Value& value) {
+  Kokkos::parallel_for(
+      label, RangePolicy<Space>(0, members.extent(0)), KOKKOS_LAMBDA(const int i) {
+        const int p = members(i);
+        out(p) = value(p);
+      });
+}
+
 template <int Dim, class Space>
 void Material<Dim, Space>::commit(const Evaluation& at) const {
   const auto declared = variables();

@@ -69,31 +69,24 @@ void PlaneStrainLaw<Law>::firstPiola(const Evaluation& at, Tensors& P, Tangents&
 
 template <class Law>
 void PlaneStrainLaw<Law>::energyDensity(const Evaluation& at, Scalars& W) const {
-  const auto members = at.members;
-  const auto F = at.F;
-  const Lame lame = lame_;
-  Kokkos::parallel_for(
-      "impm::PlaneStrainLaw::energy", RangePolicy<ExecutionSpace>(0, members.extent(0)),
-      KOKKOS_LAMBDA(const int i) {
-        const int p = members(i);
-        double f[2][2];
-        load(F, p, f);
-        W(p) = Law::evaluate(f, lame).W;
-      });
+  setFromValue("impm::PlaneStrainLaw::energy", at, &PlaneStrainValue::W, W);
 }
 
 template <class Law>
 void PlaneStrainLaw<Law>::outOfPlaneStress(const Evaluation& at, Scalars& stressZZ) const {
-  const auto members = at.members;
+  setFromValue("impm::PlaneStrainLaw::stressZZ", at, &PlaneStrainValue::stressZZ, stressZZ);
+}
+
+template <class Law>
+void PlaneStrainLaw<Law>::setFromValue(const char* label, const Evaluation& at,
+                                       double PlaneStrainValue::*field, Scalars& out) const {
   const auto F = at.F;
   const Lame lame = lame_;
-  Kokkos::parallel_for(
-      "impm::PlaneStrainLaw::stressZZ", RangePolicy<ExecutionSpace>(0, members.extent(0)),
-      KOKKOS_LAMBDA(const int i) {
-        const int p = members(i);
+  setForMembers<ExecutionSpace>(
+      label, at.members, out, KOKKOS_LAMBDA(const int p) {
         double f[2][2];
         load(F, p, f);
-        stressZZ(p) = Law::evaluate(f, lame).stressZZ;
+        return Law::evaluate(f, lame).*field;
       });
 }
 

@@ -140,6 +140,10 @@ class PlaneStrainLaw : public Material<2> {
   bool hasSymmetricTangent() const override { return true; }  // hyperelastic
 
  private:
+  // out(p) = the given field of the law's value at F_p, for the material's particles.
+  void setFromValue(const char* label, const Evaluation& at, double PlaneStrainValue::*field,
+                    Scalars& out) const;
+
   Lame lame_;
 };
 

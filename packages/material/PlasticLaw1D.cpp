@@ -91,30 +91,23 @@ void J2Law1D::firstPiola(const Evaluation& at, Tensors& P, Tangents& A) const {
 }
 
 void J2Law1D::energyDensity(const Evaluation& at, Scalars& W) const {
-  const auto members = at.members;
   const auto F = at.F;
   const ParameterTables<1> k(at.variables, kParameterCount);
   const Table epsP = at.variables.at(kPlasticStrain), alpha = at.variables.at(kAlpha);
-  Kokkos::parallel_for(
-      "impm::J2Law1D::energy", RangePolicy<ExecutionSpace>(0, members.extent(0)),
-      KOKKOS_LAMBDA(const int i) {
-        const int p = members(i);
+  setForMembers<ExecutionSpace>(
+      "impm::J2Law1D::energy", at.members, W, KOKKOS_LAMBDA(const int p) {
         double c[kMaxLawParameters];
         k.at(p, c);
         const double e = F(p, 0, 0) - 1.0 - epsP(p, 0), a = alpha(p, 0);
-        W(p) = 0.5 * c[0] * e * e + 0.5 * c[2] * a * a;
+        return 0.5 * c[0] * e * e + 0.5 * c[2] * a * a;
       });
 }
 
 void J2Law1D::dissipationDensity(const Evaluation& at, Scalars& D) const {
-  const auto members = at.members;
   const Table yield = at.variables.at(1), alpha = at.variables.at(kAlpha);
-  Kokkos::parallel_for(
-      "impm::J2Law1D::dissipation", RangePolicy<ExecutionSpace>(0, members.extent(0)),
-      KOKKOS_LAMBDA(const int i) {
-        const int p = members(i);
-        D(p) = yield(p, 0) * alpha(p, 0);
-      });
+  setForMembers<ExecutionSpace>(
+      "impm::J2Law1D::dissipation", at.members, D,
+      KOKKOS_LAMBDA(const int p) { return yield(p, 0) * alpha(p, 0); });
 }
 
 double J2Law1D::maxModulus(const Evaluation& at) const {

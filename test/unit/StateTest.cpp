@@ -74,15 +74,12 @@ class CountingLaw : public Material<1> {
       throw NumericalError("the strain increment exceeds the counting law's limit");
   }
   void energyDensity(const Evaluation& at, Scalars& W) const override {
-    const auto members = at.members;
     const auto F = at.F;
     const double E = E_;
-    Kokkos::parallel_for(
-        "CountingLaw::energy", RangePolicy<ExecutionSpace>(0, members.extent(0)),
-        KOKKOS_LAMBDA(const int i) {
-          const int p = members(i);
+    setForMembers<ExecutionSpace>(
+        "CountingLaw::energy", at.members, W, KOKKOS_LAMBDA(const int p) {
           const double e = F(p, 0, 0) - 1.0;
-          W(p) = 0.5 * E * e * e;
+          return 0.5 * E * e * e;
         });
   }
   double maxModulus(const Evaluation&) const override { return E_; }
