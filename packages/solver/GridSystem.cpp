@@ -100,7 +100,14 @@ Teuchos::RCP<MultiVector> GridSystem<Dim>::nearNullSpace() const {
 }
 
 template <int Dim>
-std::vector<std::pair<LO, double>> GridSystem<Dim>::constrainedRows() const {
+const std::vector<std::pair<LO, double>>& GridSystem<Dim>::constrainedRows() const {
+  if (!constrainedRows_)
+    constrainedRows_ = prescribedRows();
+  return *constrainedRows_;
+}
+
+template <int Dim>
+std::vector<std::pair<LO, double>> GridSystem<Dim>::prescribedRows() const {
   std::vector<std::pair<GO, double>> global;
   for (std::size_t c = 0; c < contributions_.size(); ++c)
     contributions_[c]->constraints(context(static_cast<int>(c)), global);
@@ -136,7 +143,7 @@ bool GridSystem<Dim>::anyConstrained(bool mine) const {
 template <int Dim>
 void GridSystem<Dim>::applyConstraints(const Vector& x, Vector* residual,
                                        CrsMatrix* jacobian) const {
-  const auto rows = constrainedRows();
+  const auto& rows = constrainedRows();
   if (!anyConstrained(!rows.empty()))
     return;  // no prescribed unknown on any rank
   const double scale = constraintScale();
@@ -204,6 +211,7 @@ Teuchos::RCP<CrsMatrix> GridSystem<Dim>::createJacobian() const {
 template <int Dim>
 void GridSystem<Dim>::setTime(double time, double loadFactor) {
   time_ = time, loadFactor_ = loadFactor;
+  constrainedRows_.reset();
   loaded_ = carriesForces<Dim>(particles_);
 }
 
@@ -554,6 +562,7 @@ void GridSystem<Dim>::commit(const Vector& x) {
   auto xHost = xo->getLocalViewHost(Tpetra::Access::ReadOnly);
   for (std::size_t c = 0; c < contributions_.size(); ++c)
     contributions_[c]->commit(context(static_cast<int>(c)), constHost(xHost));
+  constrainedRows_.reset();  // the increments are now from the committed state
   commitMaterials();
   // An explicit run on a fixed grid then skips one of its two law evaluations per step.
   atStepStart_ = stressAtX && startStressKept();

@@ -164,7 +164,10 @@ class GridSystem : public ResidualModel {
   double constraintScale() const;
   // Owned local index and prescribed increment of every constrained unknown: the
   // contributions' and the padding's, and the retired nodes' (solver/SystemLayout.hpp).
-  std::vector<std::pair<LO, double>> constrainedRows() const;
+  // Made once per time, load factor and commit, on which alone the increments depend
+  // (solver/Contribution.hpp), not at every evaluation.
+  const std::vector<std::pair<LO, double>>& constrainedRows() const;
+  std::vector<std::pair<LO, double>> prescribedRows() const;
   // Whether a rank has a prescribed unknown, given whether this one has (`mine`).  Asked
   // once: the prescribed unknowns (the contributions' constrained nodes and the padding, see
   // constrainedRows) are the layout's, fixed while the system lives; their increments are
@@ -220,6 +223,8 @@ class GridSystem : public ResidualModel {
   Teuchos::RCP<const Vector> stressX_, stressXOverlap_;
   mutable std::optional<double> constraintScale_;  // constraintScale()
   mutable std::optional<bool> anyConstrained_;     // anyConstrained()
+  // constrainedRows(); reset by setTime() and commit().
+  mutable std::optional<std::vector<std::pair<LO, double>>> constrainedRows_;
   StepWorkspace<Dim> ownWorkspace_;
   typename StepWorkspace<Dim>::Arrays work_;  // trial F, P, A; P, A relative to the step start
   TrialState<Dim> trial_;                     // the materials' trial state
