@@ -46,8 +46,9 @@ class Contribution {
                          std::vector<std::pair<GO, GO>>& /*out*/) const {}
   // Prescribed unknowns this rank owns, as (global index, value of the increment): their
   // rows of the system become du_i = value (Dirichlet conditions).  They may depend on the
-  // context's layout, time and load factor and on what commit() and restore() change, and on
-  // nothing else: a system asks once per time and commit, not at every evaluation.
+  // context's layout, time and load factor and on what commit() changes (restore() runs
+  // before any system is built), and on nothing else: a system asks once per time and
+  // commit, not at every evaluation.
   virtual void constraints(const ContributionContext<Dim>& /*ctx*/,
                            std::vector<std::pair<GO, double>>& /*out*/) const {}
   // Initial guess of the extra unknowns this rank owns (x is the owned vector).

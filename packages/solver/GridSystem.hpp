@@ -167,7 +167,7 @@ class GridSystem : public ResidualModel {
   // Made once per time, load factor and commit, on which alone the increments depend
   // (solver/Contribution.hpp), not at every evaluation.
   const std::vector<std::pair<LO, double>>& constrainedRows() const;
-  std::vector<std::pair<LO, double>> prescribedRows() const;
+  std::vector<std::pair<LO, double>> prescribedRows() const;  // the list made afresh
   // Whether a rank has a prescribed unknown, given whether this one has (`mine`).  Asked
   // once: the prescribed unknowns (the contributions' constrained nodes and the padding, see
   // constrainedRows) are the layout's, fixed while the system lives; their increments are
