@@ -104,6 +104,23 @@ def core_speeds_line(times):
                                                                     min(times.values())))
 
 
+def cores_before_runs(impm):
+    """Times each core (core_speeds), prints the line and returns the times for
+    cores_after_runs."""
+    times = core_speeds(impm)
+    print("Before the runs, " + core_speeds_line(times), flush=True)
+    return times
+
+
+def cores_after_runs(impm, before):
+    """Times each core again and returns (and prints) the report's two lines: the cores
+    before the runs and after them."""
+    lines = ["Before the runs, " + core_speeds_line(before),
+             "after them, " + core_speeds_line(core_speeds(impm))]
+    print("\n".join(lines), flush=True)
+    return lines
+
+
 def median_run(runs, key):
     return statistics.median(key(r) for r in runs)
 

@@ -22,7 +22,7 @@ import argparse
 import os
 import statistics
 
-from benchlib import ROOT, core_speeds, core_speeds_line, run_impm, write_section
+from benchlib import ROOT, cores_after_runs, cores_before_runs, run_impm, write_section
 
 DECK = os.path.join(ROOT, "input", "column_self_weight.xml")
 LS = "Solver/Linear Solver/"
@@ -65,8 +65,7 @@ def main():
              "|---|---|---|---|---|---|---|---|---|"]
     several = max(args.ranks) > 1
     if several:
-        cores_before = core_speeds(args.impm)
-        print("Before the runs, " + core_speeds_line(cores_before), flush=True)
+        cores_before = cores_before_runs(args.impm)
     for grid in args.grids:
         nx, ny = (int(v) for v in grid.split("x"))
         particles = 4 * nx * ny
@@ -90,9 +89,7 @@ def main():
                 memory * 1024.0 / particles * np, rs[0].rms))
             print(lines[-1], flush=True)
     if several:
-        lines += ["", "Before the runs, " + core_speeds_line(cores_before),
-                  "after them, " + core_speeds_line(core_speeds(args.impm))]
-        print("\n".join(lines[-2:]), flush=True)
+        lines += [""] + cores_after_runs(args.impm, cores_before)
     if args.write:
         write_section(args.write, "column-grid", "\n".join(lines) + "\n")
 

@@ -17,7 +17,7 @@ import argparse
 import re
 import statistics
 
-from benchlib import ROOT, core_speeds, core_speeds_line, run_impm, write_section
+from benchlib import ROOT, cores_after_runs, cores_before_runs, run_impm, write_section
 import os
 
 DECK = os.path.join(ROOT, "input", "column_hencky.xml")
@@ -35,8 +35,7 @@ def main():
     cases = [(1, True, "exact"), (2, True, "exact"), (2, False, "exact"),
              (2, True, "block Jacobi")]
     runs = {c: [] for c in cases}
-    cores_before = core_speeds(args.impm)
-    print("Before the runs, " + core_speeds_line(cores_before), flush=True)
+    cores_before = cores_before_runs(args.impm)
     for _ in range(args.repeat):  # alternating, so that the machine's drift hits every case
         for case in cases:
             np, balance, across = case
@@ -63,9 +62,7 @@ def main():
             statistics.median(r.timer("repartition") for r in rs),
             statistics.median(r.memory for r in rs)))
         print(lines[-1], flush=True)
-    lines += ["", "Before the runs, " + core_speeds_line(cores_before),
-              "after them, " + core_speeds_line(core_speeds(args.impm))]
-    print("\n".join(lines[-2:]), flush=True)
+    lines += [""] + cores_after_runs(args.impm, cores_before)
     if args.write:
         write_section(args.write, "compressed-column", "\n".join(lines) + "\n")
 
