@@ -17,6 +17,11 @@ Teuchos::ParameterList outputValidParameters() {
   declareString(valid, "Prefix", "", "File name prefix (empty: the deck file's name)");
   declareInt(valid, "Every", 1, "Write the fields every this many steps (and at the last step)",
              Bounds::atLeast(1));
+  declareInt(valid, "History Every", 1,
+             "Write a row of the history file every this many steps (and at the last step); "
+             "the energies it reports are computed for those steps only, which makes a long "
+             "explicit run's steps up to a quarter faster",
+             Bounds::atLeast(1));
   declareBool(valid, "Exodus", true, "Write Exodus files of the grid and the particles");
   declareBool(valid, "CSV", true, "Write the particle table as CSV");
   declareInt(valid, "Checkpoint Every", 0,

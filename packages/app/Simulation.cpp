@@ -337,8 +337,10 @@ void Simulation<Dim>::printProgress(const StepRecord& r, const std::vector<doubl
   if (isStatic(ti)) {
     std::cout << "  load " << std::setprecision(8) << r.loadFactor;
   } else {
-    std::cout << "  t " << std::setprecision(6) << r.time << "  dt " << r.dt << "  energy "
-              << std::setprecision(8) << r.kineticEnergy + r.strainEnergy + r.dissipation;
+    std::cout << "  t " << std::setprecision(6) << r.time << "  dt " << r.dt;
+    if (r.hasEnergies)
+      std::cout << "  energy " << std::setprecision(8)
+                << r.kineticEnergy + r.strainEnergy + r.dissipation;
   }
   const double residual = r.newton.residualNorms.empty() ? 0.0 : r.newton.residualNorms.back();
   std::cout << "  newton " << r.newton.iterations() << "  linear "
@@ -408,7 +410,8 @@ std::unique_ptr<Stepper<Dim>> Simulation<Dim>::makeStepper() {
       [this](double t) { applyLoads(t); },
       [this](const double* x, double* u, double* v) { bodies_->initialNodalState(x, u, v); },
       [this](int step) { balanceAfterStep(step); },
-      deck_.sublist("Solver").get<bool>("Graph Reuse")};
+      deck_.sublist("Solver").get<bool>("Graph Reuse"),
+      deck_.sublist("Output").get<int>("History Every")};
   const auto& timeIntegration = deck_.sublist("Time Integration");
   std::unique_ptr<Stepper<Dim>> stepper;
   if (isStatic(timeIntegration))
@@ -440,7 +443,8 @@ std::vector<std::string> Simulation<Dim>::run() {
   const StepCallback<Dim> onStep = [&](const StepRecord& r, const StepGrid<Dim>& step) {
     gridFields_->update(step);
     const auto F = reactions();
-    output->appendHistory(history.row(r, F[0], F[1], particles_, *comm_));
+    if (r.hasEnergies)  // the history's steps (Output/History Every)
+      output->appendHistory(history.row(r, F[0], F[1], particles_, *comm_));
     printProgress(r, F);
     if (output->writesFields() && (output->due(r.step) || r.last)) {
       IMPM_TIMER("output");

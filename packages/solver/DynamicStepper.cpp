@@ -366,7 +366,8 @@ void DynamicStepper<Dim>::run(const StepCallback<Dim>& onStep) {
     record.dt = h;
     record.last = done();
     record.newton = report;
-    record.kineticEnergy = conservedKineticEnergy(*mass, *vNew);
+    if (this->recordsEnergies(state.step + 1, record.last))
+      record.kineticEnergy = conservedKineticEnergy(*mass, *vNew);
     if (fixedGrid_) {
       u_->update(1.0, *du, 1.0);
       v_ = vNew, a_ = aNew;

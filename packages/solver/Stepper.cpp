@@ -97,13 +97,16 @@ void Stepper<Dim>::requireFiniteParticles(const StepRecord& record) const {
         throw NumericalError(when.str() + ": " + particleLabel(ps, p) + " has a " + name +
                              " that is not finite after the particle update");
   });
-  const std::pair<const char*, double> energies[] = {{"strain energy", record.strainEnergy},
+  const std::pair<const char*, double> energies[] = {{"external work", record.externalWork},
+                                                     {"strain energy", record.strainEnergy},
                                                      {"kinetic energy", record.kineticEnergy},
-                                                     {"dissipated energy", record.dissipation},
-                                                     {"external work", record.externalWork}};
-  for (const auto& [name, value] : energies)
+                                                     {"dissipated energy", record.dissipation}};
+  for (const auto& [name, value] : energies) {
     if (!std::isfinite(value))
       throw NumericalError(when.str() + ": the " + name + " is not finite");
+    if (!record.hasEnergies)
+      break;  // the others were not computed
+  }
 }
 
 template <int Dim>
@@ -111,11 +114,14 @@ void Stepper<Dim>::accept(StepRecord& record, const StepGrid<Dim>& grid,
                           const StepCallback<Dim>& onStep) {
   const Comm& comm = *setup_.ownership.comm();
   const std::size_t n = setup_.particles.size();
-  const auto energies = materialEnergies<Dim>(setup_.particles, setup_.materials, comm,
-                                              firstRows(energyDensity_, "W", n),
-                                              firstRows(dissipationDensity_, "D", n));
-  record.strainEnergy = energies.strain;
-  record.dissipation = energies.dissipated;
+  record.hasEnergies = recordsEnergies(state_.step + 1, record.last);
+  if (record.hasEnergies) {
+    const auto energies = materialEnergies<Dim>(setup_.particles, setup_.materials, comm,
+                                                firstRows(energyDensity_, "W", n),
+                                                firstRows(dissipationDensity_, "D", n));
+    record.strainEnergy = energies.strain;
+    record.dissipation = energies.dissipated;
+  }
   record.externalWork = state_.bodyWork + contributionWork<Dim>(setup_.contributions);
   requireFiniteParticles(record);  // nothing that is not finite reaches the outputs
   record.step = ++state_.step;

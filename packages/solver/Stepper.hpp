@@ -76,12 +76,18 @@ class Stepper {
   // converged increment are kept for the step's record.
   void gridToParticles(GridSystem<Dim>& system, const Vector& du, double workScale);
 
+  // Whether the record of accepted step `step` carries the energies (the same answer on
+  // every rank: the energies are sums over all of them).
+  bool recordsEnergies(int step, bool last) const {
+    return last || step % setup_.energiesEvery == 0;
+  }
+
   // NumericalError (on every rank) when a particle's position, velocity, F or stress, or an
   // energy of the record, is NaN or infinite after the update.  Collective.
   void requireFiniteParticles(const StepRecord& record) const;
 
-  // 4. The step is accepted: fills the record's step, attempts and energies (the kinetic
-  // energy is the caller's), regrows the step size, reports, migrates.
+  // 4. The step is accepted: fills the record's step, attempts and, where recordsEnergies,
+  // energies (the kinetic energy is the caller's), regrows the step size, reports, migrates.
   void accept(StepRecord& record, const StepGrid<Dim>& grid, const StepCallback<Dim>& onStep);
 
   StepperSetup<Dim> setup_;

@@ -34,6 +34,10 @@ struct StepperSetup {
   // Keep a step's unknowns and graph for the next steps while the (particle, node) pairs
   // stay the same (solver/SystemLayout.hpp); false: build them every step.
   bool reuseLayout = true;
+  // The steps whose record carries the energies: every this many and the last (the history's
+  // rows).  Each costs passes over the particles and reductions, as much as half a residual
+  // evaluation of an explicit step.
+  int energiesEvery = 1;
 };
 
 // What a stepper carries from one step to the next: all a restart needs to continue as if
@@ -61,6 +65,9 @@ struct StepRecord {
   bool last = false;  // the run ends with this step
   NewtonReport newton;
   double kineticEnergy = 0.0, strainEnergy = 0.0, dissipation = 0.0, externalWork = 0.0;
+  // Whether kineticEnergy, strainEnergy and dissipation were computed for this step
+  // (StepperSetup::energiesEvery); the external work always is.
+  bool hasEnergies = true;
   // The reaction of every support that reports one (Contribution::reactionName), in order.
   std::vector<double> supportForces;
 };

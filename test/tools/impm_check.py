@@ -234,6 +234,32 @@ def history(args):
         sys.exit(1)
 
 
+def history_every(args):
+    """Output/History Every = N keeps the history rows of steps 0, N, 2N, ... and the last,
+    each the very row (every column, as written) of the run with a row per step, and changes
+    nothing else: the particle tables are the same."""
+    every = "Output/History Every=%d" % args.every
+    full_particles, full = run_tables(args, args.set, args.np, "impm-history-every-")
+    thin_particles, thin = run_tables(args, args.set + [every], args.np, "impm-history-every-")
+    steps = [int(row["step"]) for row in full]
+    expected = [s for s in steps if s % args.every == 0 or s == steps[-1]]
+    got = [int(row["step"]) for row in thin]
+    failures = []
+    if got != expected:
+        failures.append("rows at steps %s, expected %s" % (got, expected))
+    by_step = {int(row["step"]): row for row in full}
+    for row in thin:
+        if row != by_step.get(int(row["step"])):
+            failures.append("step %s: %s, with a row every step %s"
+                            % (row["step"], row, by_step.get(int(row["step"]))))
+    if thin_particles != full_particles:
+        failures.append("the particle tables differ")
+    print("%d of %d rows kept (every %d steps and the last)" % (len(got), len(full), args.every))
+    for f in failures[:5]:
+        print("FAIL:", f)
+    sys.exit(1 if failures or len(expected) >= len(steps) else 0)
+
+
 def energy(args):
     """Runs a deck and checks its energy balance: the largest |energy_balance| (kinetic +
     strain + dissipated - external work) over the largest external work, at any step."""
@@ -602,6 +628,12 @@ def main():
     h.add_argument("--np", type=int, default=1)
     h.add_argument("--set", action="append", default=[])
 
+    he = sub.add_parser("history-every")
+    he.add_argument("--deck", required=True)
+    he.add_argument("--every", type=int, required=True)
+    he.add_argument("--np", type=int, default=1)
+    he.add_argument("--set", action="append", default=[])
+
     e = sub.add_parser("energy")
     e.add_argument("--deck", required=True)
     e.add_argument("--tolerance", type=float, required=True)
@@ -678,7 +710,8 @@ def main():
     args = p.parse_args()
     {"convergence": convergence, "ranks": ranks, "fails": fails, "docs": docs, "newton": newton,
      "same": same, "uniform": uniform, "translation": translation,
-     "history": history, "unloading": unloading, "energy": energy, "iterations": iterations}[args.check](args)
+     "history": history, "history-every": history_every, "unloading": unloading, "energy": energy,
+     "iterations": iterations}[args.check](args)
 
 
 if __name__ == "__main__":
