@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <iterator>
 #include <sstream>
 
 #include "assembly/Energy.hpp"
@@ -97,16 +98,16 @@ void Stepper<Dim>::requireFiniteParticles(const StepRecord& record) const {
         throw NumericalError(when.str() + ": " + particleLabel(ps, p) + " has a " + name +
                              " that is not finite after the particle update");
   });
+  // The external work is summed every step, the other energies only where the record has
+  // them (Stepper::recordsEnergies).
   const std::pair<const char*, double> energies[] = {{"external work", record.externalWork},
                                                      {"strain energy", record.strainEnergy},
                                                      {"kinetic energy", record.kineticEnergy},
                                                      {"dissipated energy", record.dissipation}};
-  for (const auto& [name, value] : energies) {
-    if (!std::isfinite(value))
-      throw NumericalError(when.str() + ": the " + name + " is not finite");
-    if (!record.hasEnergies)
-      break;  // the others were not computed
-  }
+  const std::size_t computed = record.hasEnergies ? std::size(energies) : 1;
+  for (std::size_t k = 0; k < computed; ++k)
+    if (!std::isfinite(energies[k].second))
+      throw NumericalError(when.str() + ": the " + energies[k].first + " is not finite");
 }
 
 template <int Dim>
