@@ -366,7 +366,7 @@ void DynamicStepper<Dim>::run(const StepCallback<Dim>& onStep) {
     record.dt = h;
     record.last = done();
     record.newton = report;
-    if (this->recordsEnergies(state.step + 1, record.last))
+    if (this->recordsEnergies(record))
       record.kineticEnergy = conservedKineticEnergy(*mass, *vNew);
     if (fixedGrid_) {
       u_->update(1.0, *du, 1.0);

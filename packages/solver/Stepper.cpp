@@ -115,7 +115,7 @@ void Stepper<Dim>::accept(StepRecord& record, const StepGrid<Dim>& grid,
                           const StepCallback<Dim>& onStep) {
   const Comm& comm = *setup_.ownership.comm();
   const std::size_t n = setup_.particles.size();
-  record.hasEnergies = recordsEnergies(state_.step + 1, record.last);
+  record.hasEnergies = recordsEnergies(record);
   if (record.hasEnergies) {
     const auto energies = materialEnergies<Dim>(setup_.particles, setup_.materials, comm,
                                                 firstRows(energyDensity_, "W", n),

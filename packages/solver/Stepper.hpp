@@ -76,10 +76,11 @@ class Stepper {
   // converged increment are kept for the step's record.
   void gridToParticles(GridSystem<Dim>& system, const Vector& du, double workScale);
 
-  // Whether the record of accepted step `step` carries the energies (the same answer on
-  // every rank: the energies are sums over all of them).
-  bool recordsEnergies(int step, bool last) const {
-    return last || step % setup_.energiesEvery == 0;
+  // Whether the record of the step being accepted (number state_.step + 1, before accept
+  // counts it) carries the energies: every energiesEvery-th step and the last.  The same
+  // answer on every rank: the energies are sums over all of them.
+  bool recordsEnergies(const StepRecord& record) const {
+    return record.last || (state_.step + 1) % setup_.energiesEvery == 0;
   }
 
   // NumericalError (on every rank) when a particle's position, velocity, F or stress, or an
