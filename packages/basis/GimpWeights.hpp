@@ -27,9 +27,12 @@ struct GimpWeights {
     b = clipToGrid(grid, d, grid.gridCoord(d, x(p, d) + l));
   }
 
-  // What every node's weights read of particle p: its domain's ends along each direction.
+  // What every node's weights read of particle p: its domain's ends along each direction,
+  // and the reciprocals of its widths in grid units and in length (made once, not per node:
+  // divisions were most of the map's time in 1-D).
   struct Particle {
     double a[Dim], b[Dim];
+    double inverseWidth[Dim], inverseLength[Dim];
   };
 
   KOKKOS_INLINE_FUNCTION bool nodeBox(int p, Particle& at, int lo[Dim], int hi[Dim],
@@ -38,6 +41,9 @@ struct GimpWeights {
       if (!centreInside(grid, d, grid.gridCoord(d, x(p, d)), tol))
         return false;
       ends(p, d, at.a[d], at.b[d]);
+      const double width = at.b[d] - at.a[d];
+      at.inverseWidth[d] = width > 0 ? 1.0 / width : 0.0;
+      at.inverseLength[d] = 1.0 / (width * grid.spacing[d]);
       lo[d] = at.a[d] <= 0 ? 0 : static_cast<int>(Kokkos::Experimental::floor(at.a[d]));
       hi[d] = static_cast<int>(Kokkos::Experimental::ceil(at.b[d]));
       if (hi[d] > grid.cells[d])
@@ -51,8 +57,8 @@ struct GimpWeights {
     double n[Dim], dn[Dim];
     for (int d = 0; d < Dim; ++d) {
       const double a = at.a[d], b = at.b[d];
-      n[d] = tentAverage(a - node[d], b - node[d]);
-      dn[d] = (tent(b - node[d]) - tent(a - node[d])) / ((b - a) * grid.spacing[d]);
+      n[d] = tentAverage(a - node[d], b - node[d], at.inverseWidth[d]);
+      dn[d] = (tent(b - node[d]) - tent(a - node[d])) * at.inverseLength[d];
     }
     tensorProduct<Dim>(n, dn, phi, grad);
   }
