@@ -28,8 +28,8 @@ struct GimpWeights {
   }
 
   // What every node's weights read of particle p: its domain's ends along each direction,
-  // and the reciprocals of its widths in grid units and in length (made once, not per node:
-  // divisions were most of the map's time in 1-D).
+  // and the reciprocals of its widths in grid units and in length (made once per particle
+  // rather than divided by twice per node and direction).
   struct Particle {
     double a[Dim], b[Dim];
     double inverseWidth[Dim], inverseLength[Dim];

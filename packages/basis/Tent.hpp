@@ -57,8 +57,8 @@ KOKKOS_INLINE_FUNCTION bool centreInside(const Grid& grid, int d, double g, doub
 
 // Average of the tent over [a, b] (grid units) given 1 / (b - a); the tent value itself
 // when b == a.  (The reciprocal is the caller's: a particle's is the same for every node.)
-KOKKOS_INLINE_FUNCTION double tentAverage(double a, double b, double inverseLength) {
-  return b > a ? (tentIntegral(b) - tentIntegral(a)) * inverseLength : tent(a);
+KOKKOS_INLINE_FUNCTION double tentAverage(double a, double b, double inverseWidth) {
+  return b > a ? (tentIntegral(b) - tentIntegral(a)) * inverseWidth : tent(a);
 }
 KOKKOS_INLINE_FUNCTION double tentAverage(double a, double b) {
   return tentAverage(a, b, b > a ? 1.0 / (b - a) : 0.0);
