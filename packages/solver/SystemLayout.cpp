@@ -28,15 +28,19 @@ LayoutKey<Dim> keyOf(const NodeOwnership<Dim>& ownership, const ParticleGridMap<
   key.ownership = &ownership;
   key.ownershipRevision = ownership.revision();
   key.coupling = coupling;
-  auto node = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), map.node);
-  key.touched.assign(node.data(), node.data() + node.extent(0));
+  std::vector<GlobalId> others;  // the nodes the contributions reach
   for (const auto& c : contributions) {
     firstExtra.push_back(static_cast<int>(extras.size()));
-    c->prepare(ownership, extras, key.touched);
+    c->prepare(ownership, extras, others);
   }
   for (const auto& e : extras)
     key.extraNodes.push_back(e.anchorNode);
+  // The map's nodes, then the contributions', in one allocation.
+  auto node = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), map.node);
+  key.touched.reserve(node.extent(0) + others.size());
+  key.touched.assign(node.data(), node.data() + node.extent(0));
   if (coupling == NodeCoupling::shared) {
+    key.touched.insert(key.touched.end(), others.begin(), others.end());
     auto rowPtr = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), map.rowPtr);
     key.rowPtr.assign(rowPtr.data(), rowPtr.data() + rowPtr.extent(0));
     return key;
@@ -45,8 +49,6 @@ LayoutKey<Dim> keyOf(const NodeOwnership<Dim>& ownership, const ParticleGridMap<
   // touch, not on which point touches which: the key lists the distinct nodes, those of the
   // map and those of the contributions apart (so that a kept layout's check that every
   // node is integrated still holds).
-  std::vector<GlobalId> others(key.touched.begin() + node.extent(0), key.touched.end());
-  key.touched.resize(node.extent(0));
   sortUnique(key.touched);
   sortUnique(others);
   key.touched.insert(key.touched.end(), others.begin(), others.end());
