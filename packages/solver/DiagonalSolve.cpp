@@ -66,45 +66,64 @@ DiagonalElimination::DiagonalElimination(const CrsMatrix& J, const Vector& nodal
     }
   }
   const int n = static_cast<int>(extras.size());
-  std::vector<Vector> column, rowScaled;
+  for (int k = 0; k < n; ++k)
+    extraRows_.push_back(map_->getLocalElement(extras[k]));
+  // Column and row k of J by products with the unit vector of extra k: E's column k from
+  // the rows of the extras, B_k and D^-1 C_k^T kept by their few nonzeros.  Each rank adds
+  // its part of E - C D^-1 B, summed over the ranks once.
+  std::vector<double> local(static_cast<std::size_t>(n) * n, 0.0);  // column-major, as lu_
   for (int k = 0; k < n; ++k) {
     const Vector e = unit(map_, extras[k]);
-    Vector full(map_), row(map_);
-    J.apply(e, full);                 // column k of J
-    J.apply(e, row, Teuchos::TRANS);  // row k of J
-    for (int j = 0; j < n; ++j)
-      lu_(j, k) = unit(map_, extras[j]).dot(full);  // E
-    column.emplace_back(map_);
-    column.back().elementWiseMultiply(1.0, nodal, full, 0.0);
-    rowScaled.emplace_back(map_);
-    rowScaled.back().elementWiseMultiply(1.0, dinv_, row, 0.0);
+    Vector full(map_, false), row(map_, false);  // overwritten whole by apply
+    J.apply(e, full);                            // column k of J
+    J.apply(e, row, Teuchos::TRANS);             // row k of J
+    {
+      auto f = full.getLocalViewHost(Tpetra::Access::ReadOnly);
+      for (int j = 0; j < n; ++j)
+        if (extraRows_[j] >= 0)
+          local[j + n * k] += f(extraRows_[j], 0);  // E
+    }
+    column_.push_back(nonzeros(full, nodal));
+    rowScaled_.push_back(nonzeros(row, dinv_));
   }
   for (int j = 0; j < n; ++j)
     for (int k = 0; k < n; ++k)
-      lu_(j, k) -= rowScaled[j].dot(column[k]);
+      local[j + n * k] -= dot(rowScaled_[j], column_[k]);
+  if (n > 0)
+    Teuchos::reduceAll(*map_->getComm(), Teuchos::REDUCE_SUM, n * n, local.data(), lu_.values());
   int info = 0;
   if (n > 0)
     Teuchos::LAPACK<int, double>().GETRF(n, n, lu_.values(), lu_.stride(), pivots_.data(), &info);
   if (info != 0)
     throw NumericalError("the explicit update's boundary-force system is singular");
-  // What solve() needs of them: their few nonzero entries.
-  for (int k = 0; k < n; ++k) {
-    column_.push_back(nonzeros(column[k]));
-    rowScaled_.push_back(nonzeros(rowScaled[k]));
-    touched_.insert(touched_.end(), column_.back().rows.begin(), column_.back().rows.end());
-    extraRows_.push_back(map_->getLocalElement(extras[k]));
-  }
+  // What solve() needs: the rows of every B_k, each once.
+  for (int k = 0; k < n; ++k)
+    touched_.insert(touched_.end(), column_[k].rows.begin(), column_[k].rows.end());
   std::sort(touched_.begin(), touched_.end());
   touched_.erase(std::unique(touched_.begin(), touched_.end()), touched_.end());
 }
 
-DiagonalElimination::Sparse DiagonalElimination::nonzeros(const Vector& v) {
+DiagonalElimination::Sparse DiagonalElimination::nonzeros(const Vector& v, const Vector& scale) {
   Sparse out;
   auto values = v.getLocalViewHost(Tpetra::Access::ReadOnly);
+  auto factors = scale.getLocalViewHost(Tpetra::Access::ReadOnly);
   for (std::size_t i = 0; i < values.extent(0); ++i)
-    if (values(i, 0) != 0.0)
-      out.rows.push_back(static_cast<LO>(i)), out.values.push_back(values(i, 0));
+    if (const double x = factors(i, 0) * values(i, 0); x != 0.0)
+      out.rows.push_back(static_cast<LO>(i)), out.values.push_back(x);
   return out;
+}
+
+double DiagonalElimination::dot(const Sparse& a, const Sparse& b) {
+  double sum = 0.0;  // both lists are in the order of their rows
+  for (std::size_t i = 0, j = 0; i < a.rows.size() && j < b.rows.size();) {
+    if (a.rows[i] < b.rows[j])
+      ++i;
+    else if (b.rows[j] < a.rows[i])
+      ++j;
+    else
+      sum += a.values[i++] * b.values[j++];
+  }
+  return sum;
 }
 
 void DiagonalElimination::solve(const Vector& b, Vector& x) const {

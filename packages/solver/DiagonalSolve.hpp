@@ -33,12 +33,15 @@ class DiagonalElimination {
   void solve(const Vector& b, Vector& x) const;
 
  private:
-  // The nonzero entries of a vector on this rank: local rows and values.
+  // The nonzero entries of a vector on this rank: local rows (ascending) and values.
   struct Sparse {
     std::vector<LO> rows;
     std::vector<double> values;
   };
-  static Sparse nonzeros(const Vector& v);
+  // Those of scale .* v.
+  static Sparse nonzeros(const Vector& v, const Vector& scale);
+  // The sum over this rank's rows of a_i b_i.
+  static double dot(const Sparse& a, const Sparse& b);
 
   Teuchos::RCP<const Map> map_;
   std::vector<GO> extras_;
