@@ -3,24 +3,14 @@
 namespace impm {
 
 template <int Dim, class Space>
-void updateParticles(Kinematics kinematics, const ParticleGridMap<Dim, Space>& map,
-                     const EntryDofs<Space>& entryDofs, const LocalValues& du,
-                     const typename ParticleSet<Dim, Space>::Tensors& F,
-                     const typename ParticleSet<Dim, Space>::Tensors& P,
-                     const ParticleSet<Dim, Space>& particles) {
+void displaceParticles(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& entryDofs,
+                       const LocalValues& du, const ParticleSet<Dim, Space>& particles) {
   auto rowPtr = map.rowPtr;
   auto phi = map.phi;
   auto u = particles.u;
   auto x = particles.x;
-  auto Fp = particles.F;
-  auto stress = particles.stress;
-  auto volume = particles.volume;
-  auto volume0 = particles.volume0;
-  auto domain = particles.domain;
-  auto domain0 = particles.domain0;
-  const bool moves = kinematics == Kinematics::updatedLagrangian;
   Kokkos::parallel_for(
-      "impm::updateParticles", RangePolicy<Space>(0, map.numParticles()),
+      "impm::displaceParticles", RangePolicy<Space>(0, map.numParticles()),
       KOKKOS_LAMBDA(const int p) {
         for (int a = 0; a < Dim; ++a) {
           double dup = 0;
@@ -29,6 +19,23 @@ void updateParticles(Kinematics kinematics, const ParticleGridMap<Dim, Space>& m
           u(p, a) += dup;
           x(p, a) += dup;  // total Lagrangian: x = X + u, the map stays at X
         }
+      });
+}
+
+template <int Dim, class Space>
+void commitDeformation(Kinematics kinematics, const typename ParticleSet<Dim, Space>::Tensors& F,
+                       const typename ParticleSet<Dim, Space>::Tensors& P,
+                       const ParticleSet<Dim, Space>& particles) {
+  auto Fp = particles.F;
+  auto stress = particles.stress;
+  auto volume = particles.volume;
+  auto volume0 = particles.volume0;
+  auto domain = particles.domain;
+  auto domain0 = particles.domain0;
+  const bool moves = kinematics == Kinematics::updatedLagrangian;
+  Kokkos::parallel_for(
+      "impm::commitDeformation", RangePolicy<Space>(0, particles.size()),
+      KOKKOS_LAMBDA(const int p) {
         for (int a = 0; a < Dim; ++a)
           for (int b = 0; b < Dim; ++b)
             Fp(p, a, b) = F(p, a, b);
@@ -60,10 +67,12 @@ void followDeformation(const ParticleSet<Dim, Space>& particles) {
       KOKKOS_LAMBDA(const int p) { deformedDomain<Dim>(F, domain0, domain, p); });
 }
 
-#define IMPM_INSTANTIATE(D)                                                                   \
-  template void updateParticles<D, DefaultExecSpace>(                                         \
-      Kinematics, const ParticleGridMap<D>&, const EntryDofs<>&, const LocalValues&,          \
-      const ParticleSet<D>::Tensors&, const ParticleSet<D>::Tensors&, const ParticleSet<D>&); \
+#define IMPM_INSTANTIATE(D)                                                                        \
+  template void displaceParticles<D, DefaultExecSpace>(                                            \
+      const ParticleGridMap<D>&, const EntryDofs<>&, const LocalValues&, const ParticleSet<D>&);   \
+  template void commitDeformation<D, DefaultExecSpace>(Kinematics, const ParticleSet<D>::Tensors&, \
+                                                       const ParticleSet<D>::Tensors&,             \
+                                                       const ParticleSet<D>&);                     \
   template void followDeformation<D, DefaultExecSpace>(const ParticleSet<D>&);
 IMPM_INSTANTIATE(1)
 IMPM_INSTANTIATE(2)

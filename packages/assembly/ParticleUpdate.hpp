@@ -1,23 +1,30 @@
 #pragma once
-// Grid to particles after a converged step: the displacement increment is mapped with
-// u_p = sum_i phi_ip u_i (eq. 1.23) and the particle state is advanced:
-//   u_p += sum_i phi_ip du_i,  x_p += sum_i phi_ip du_i,  F_p = trial F,
-//   stress = P F^T / J (Cauchy; in 1-D the axial force per unit section);
-// with updated-Lagrangian kinematics the domains follow the deformation, domain = F domain0
-// (eq. 1.36 CPDI vectors), and so does the volume, V_p = J V_p0.  (With total-Lagrangian
-// kinematics the map is built at X_p, the reference domains and volumes; domain is then
-// what the output draws, made by followDeformation before an output needs it.)
+// Grid to particles after a converged step, in two parts that a stepper may run apart:
+//   displaceParticles: the displacement increment mapped with u_p = sum_i phi_ip u_i
+//     (eq. 1.23): u_p += sum_i phi_ip du_i, x_p += sum_i phi_ip du_i;
+//   commitDeformation: F_p = trial F, stress = P F^T / J (Cauchy; in 1-D the axial force
+//     per unit section); with updated-Lagrangian kinematics the domains follow the
+//     deformation, domain = F domain0 (eq. 1.36 CPDI vectors), and so does the volume,
+//     V_p = J V_p0.  (With total-Lagrangian kinematics the map is built at X_p, the
+//     reference domains and volumes; domain is then what the output draws, made by
+//     followDeformation before an output needs it.)
+// Nothing in a step reads u_p or x_p on a fixed grid, where F comes from the grid's
+// increments at the reference positions: there the displacement may wait for the step
+// whose outputs read it (solver/DynamicStepper), the deformation may not (the next step
+// starts from F and the laws' committed state).
 
 #include "assembly/Kinematics.hpp"
 
 namespace impm {
 
 template <int Dim, class Space = DefaultExecSpace>
-void updateParticles(Kinematics kinematics, const ParticleGridMap<Dim, Space>& map,
-                     const EntryDofs<Space>& entryDofs, const LocalValues& du,
-                     const typename ParticleSet<Dim, Space>::Tensors& F,
-                     const typename ParticleSet<Dim, Space>::Tensors& P,
-                     const ParticleSet<Dim, Space>& particles);
+void displaceParticles(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& entryDofs,
+                       const LocalValues& du, const ParticleSet<Dim, Space>& particles);
+
+template <int Dim, class Space = DefaultExecSpace>
+void commitDeformation(Kinematics kinematics, const typename ParticleSet<Dim, Space>::Tensors& F,
+                       const typename ParticleSet<Dim, Space>::Tensors& P,
+                       const ParticleSet<Dim, Space>& particles);
 
 // domain = F domain0 for every particle.
 template <int Dim, class Space = DefaultExecSpace>

@@ -7,8 +7,21 @@
 
 namespace impm {
 
+// The step's deformation and displacement: advanceParticles is deformParticles and
+// moveParticles together (one import of du).
 template <int Dim>
 void advanceParticles(GridSystem<Dim>& system, const Vector& du, Kinematics kinematics,
                       ParticleSet<Dim>& particles);
+
+// F, the Cauchy stress, and where the particles move with the grid their domains and volumes.
+template <int Dim>
+void deformParticles(GridSystem<Dim>& system, const Vector& du, Kinematics kinematics,
+                     ParticleSet<Dim>& particles);
+
+// u_p and x_p (and the tracked domain corners) by the grid increment du, which may sum
+// several steps' on a fixed grid (the weights do not change there).
+template <int Dim>
+void moveParticles(const GridSystem<Dim>& system, const Vector& du, Kinematics kinematics,
+                   ParticleSet<Dim>& particles);
 
 }  // namespace impm

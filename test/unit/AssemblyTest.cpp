@@ -114,7 +114,8 @@ TEST(ParticleUpdate, MovesParticlesWithTheGridAndScalesDomains) {
   ParticleSet<1>::Tensors F("F", 6), P("P", 6);
   trialDeformationGradient<1>(Kinematics::updatedLagrangian, f.map, f.lids, du, f.ps.F, F);
   Kokkos::deep_copy(P, 3.0);
-  updateParticles<1>(Kinematics::updatedLagrangian, f.map, f.lids, du, F, P, f.ps);
+  commitDeformation<1>(Kinematics::updatedLagrangian, F, P, f.ps);
+  displaceParticles<1>(f.map, f.lids, du, f.ps);
   auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), f.ps.x);
   auto u = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), f.ps.u);
   auto V = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), f.ps.volume);
