@@ -397,6 +397,13 @@ std::vector<typename Bodies<Dim>::ConstantLoads> Bodies<Dim>::constantLoads() co
 }
 
 template <int Dim>
+bool Bodies<Dim>::loadsReadPositions() const {
+  const auto constants = constantLoads();
+  return !std::all_of(constants.begin(), constants.end(),
+                      [](const ConstantLoads& c) { return c.all; });
+}
+
+template <int Dim>
 void Bodies<Dim>::applyLoads(ParticleSet<Dim>& particles, double time) {
   // Loads given as numbers need no formula per particle: this runs every step, as often as
   // a residual evaluation in explicit runs.  When they are the numbers of the last call and

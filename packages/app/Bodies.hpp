@@ -74,6 +74,8 @@ class Bodies {
   // times the particle's length plus its mass times the body force (per unit mass).  Only
   // this sets the forces; `particles` is the same set at every call.
   void applyLoads(ParticleSet<Dim>& particles, double time);
+  // Whether applyLoads reads the particles' positions (a load given as a formula).
+  bool loadsReadPositions() const;
 
  private:
   // The corners of particle p, from seed k of `shape`.

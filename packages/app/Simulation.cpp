@@ -297,6 +297,13 @@ void Simulation<Dim>::checkExplicitTimeStep() const {
 }
 
 template <int Dim>
+bool Simulation<Dim>::particlesReadEveryStep() const {
+  return bodies_->loadsReadPositions() ||
+         std::any_of(conditions_.begin(), conditions_.end(),
+                     [](const auto& c) { return c->readsParticleMotion(); });
+}
+
+template <int Dim>
 void Simulation<Dim>::applyLoads(double time) {
   try {
     collectively(*comm_, [&] { bodies_->applyLoads(particles_, time); });
@@ -411,7 +418,8 @@ std::unique_ptr<Stepper<Dim>> Simulation<Dim>::makeStepper() {
       [this](const double* x, double* u, double* v) { bodies_->initialNodalState(x, u, v); },
       [this](int step) { balanceAfterStep(step); },
       deck_.sublist("Solver").get<bool>("Graph Reuse"),
-      deck_.sublist("Output").get<int>("History Every")};
+      deck_.sublist("Output").get<int>("History Every"),
+      particlesReadEveryStep()};
   const auto& timeIntegration = deck_.sublist("Time Integration");
   std::unique_ptr<Stepper<Dim>> stepper;
   if (isStatic(timeIntegration))
@@ -448,11 +456,13 @@ std::vector<std::string> Simulation<Dim>::run() {
     printProgress(r, F);
     if (output->writesFields() && (output->due(r.step) || r.last)) {
       IMPM_TIMER("output");
+      stepper_->syncParticles();
       particles_.updateDerived();  // output-only fields
       collectively(*comm_,
                    [&] { output->writeFields(r.time, particles_, gridFields_->values(), F); });
     }
     if (checkpoints.due(r.step, r.last)) {
+      stepper_->syncParticles();
       particles_.updateDerived();  // the drawn domains, as the outputs have them
       writeCheckpoint(checkpoints, r.step, *stepper_, *output);
       checkpointed = r.step;
@@ -470,11 +480,13 @@ std::vector<std::string> Simulation<Dim>::run() {
     // committed): the checkpoint is of the last accepted step.
     const auto& state = stepper_->state();
     if (checkpointed != state.step) {
+      stepper_->syncParticles();
       particles_.updateDerived();
       writeCheckpoint(checkpoints, state.step, *stepper_, *output);
     }
     throw RunStopped(state.step, state.time, !betweenSteps, checkpoints.pathOf(state.step));
   }
+  stepper_->syncParticles();  // the verification reads them
   return finish(finalTime, output->files(), stepper_->layouts());
 }
 

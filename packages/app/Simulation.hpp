@@ -62,6 +62,8 @@ class Simulation {
   // The particles' external forces at `time`, on every rank; NumericalError when a load
   // formula is not finite at a particle.  Collective.
   void applyLoads(double time);
+  // Whether the loads or a boundary condition read the particles' positions in every step.
+  bool particlesReadEveryStep() const;
   void printHeader() const;
   void printProgress(const StepRecord& record, const std::vector<double>& F) const;
   double progressFraction(double time, double loadFactor) const;

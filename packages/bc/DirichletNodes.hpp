@@ -40,6 +40,7 @@ class DirichletNodes : public Contribution<Dim> {
   void restore(const std::vector<double>& state) override;
   std::string reactionName() const override { return name_; }
   double reaction(const ContributionContext<Dim>& ctx, const HostValues& r) override;
+  bool readsParticleMotion() const override { return false; }  // grid nodes only
 
  private:
   bool selects(const int idx[Dim]) const;

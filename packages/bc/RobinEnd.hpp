@@ -44,6 +44,7 @@ class RobinEnd : public Contribution<1> {
   // position, displacement, force and work of the end.
   std::vector<double> state() const override { return {position_, displacement_, force_, work_}; }
   void restore(const std::vector<double>& s) override;
+  bool readsParticleMotion() const override { return false; }  // it follows its own end
 
   const std::string& name() const { return name_; }
   const std::string& body() const { return body_; }

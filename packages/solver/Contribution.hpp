@@ -77,6 +77,11 @@ class Contribution {
   virtual double reaction(const ContributionContext<Dim>& /*ctx*/, const HostValues& /*r*/) {
     return 0.0;
   }
+  // Whether any call reads the particles' displacement or position (an edge traction follows
+  // the particles' faces).  A fixed grid's explicit steps let the particles' motion wait
+  // only when none does (solver/DynamicStepper.hpp); a condition that reads the grid alone
+  // says so.
+  virtual bool readsParticleMotion() const { return true; }
 };
 
 }  // namespace impm

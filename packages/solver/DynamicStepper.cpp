@@ -40,7 +40,9 @@ template <int Dim>
 DynamicStepper<Dim>::DynamicStepper(const DynamicSettings& settings, StepperSetup<Dim> setup)
     : Stepper<Dim>(std::move(setup), settings.timeStep, settings.minTimeStep),
       settings_(settings),
-      fixedGrid_(this->setup_.kinematics == Kinematics::totalLagrangian) {
+      fixedGrid_(this->setup_.kinematics == Kinematics::totalLagrangian),
+      particlesMayWait_(fixedGrid_ && settings.isExplicit() &&
+                        !this->setup_.particlesReadEveryStep) {
   if (settings_.isExplicit()) {
     settings_.mass = MassType::lumped;
     this->nodeCoupling_ = NodeCoupling::self;  // the Jacobian is c0 M: diagonal in the nodes
@@ -274,7 +276,18 @@ bool DynamicStepper<Dim>::eliminate(GridSystem<Dim>& system, Vector& du,
 
 template <int Dim>
 void DynamicStepper<Dim>::gridToParticles(GridSystem<Dim>& system, const Vector& du,
-                                          const Vector& v, const Vector& vNew, const Vector& aNew) {
+                                          const Vector& v, const Vector& vNew, const Vector& aNew,
+                                          const StepRecord& record) {
+  if (particlesMayWait_ && !this->recordsEnergies(record) && !system.particlesCarryForces()) {
+    this->namingCurrentPositions([&] { Stepper<Dim>::gridToParticles(system, du, 1.0, false); });
+    if (pending_.du.is_null())
+      pending_.du = Teuchos::rcp(new Vector(du, Teuchos::Copy));
+    else
+      pending_.du->update(1.0, du, 1.0);
+    pending_.step = this->state_.step + 1, pending_.time = record.time;
+    return;  // the velocities follow in syncParticles, from the grid's
+  }
+  syncParticles();  // the steps before first: the body forces' work reads u before this one
   Stepper<Dim>::gridToParticles(system, du, 1.0);
   // Without FLIP the velocity's change is not needed (it enters times 0): the new velocity
   // stands in for the old.
@@ -286,6 +299,24 @@ void DynamicStepper<Dim>::gridToParticles(GridSystem<Dim>& system, const Vector&
                               vn->getLocalViewDevice(Tpetra::Access::ReadOnly),
                               an->getLocalViewDevice(Tpetra::Access::ReadOnly), flip,
                               this->setup_.particles);
+}
+
+template <int Dim>
+void DynamicStepper<Dim>::syncParticles() {
+  if (!particlesWait())
+    return;
+  auto& particles = this->setup_.particles;
+  moveParticles(*fixedSystem_, *pending_.du, this->setup_.kinematics, particles);
+  pending_.du = Teuchos::null;
+  // A fixed grid's particle velocities are the grid's (PIC), and v_, a_ are those of the
+  // step the waiting increment ends at (run() sets them before it accepts a step).
+  auto vo = fixedSystem_->toOverlap(*v_), ao = fixedSystem_->toOverlap(*a_);
+  const auto v = vo->getLocalViewDevice(Tpetra::Access::ReadOnly);
+  gridToParticleVelocity<Dim>(fixedSystem_->particleGridMap(), fixedSystem_->entryDofs(), v, v,
+                              ao->getLocalViewDevice(Tpetra::Access::ReadOnly), 0.0, particles);
+  std::ostringstream when;
+  when << "step " << pending_.step << " (t = " << pending_.time << ")";
+  this->requireFiniteMotion(when.str());
 }
 
 template <int Dim>
@@ -319,8 +350,8 @@ template <int Dim>
 void DynamicStepper<Dim>::run(const StepCallback<Dim>& onStep) {
   auto& state = this->state_;
   const double T = settings_.finalTime;
-  const auto done = [&] { return state.time >= T - 1e-9 * settings_.timeStep; };
-  while (!done()) {
+  const auto endsAt = [&](double time) { return time >= T - 1e-9 * settings_.timeStep; };
+  while (!endsAt(state.time)) {
     // The last step ends at T, unless T is a whole step away up to round-off: then the
     // step keeps its size, so that stopping at T and extending the run later takes the
     // same steps as running on.
@@ -357,15 +388,15 @@ void DynamicStepper<Dim>::run(const StepCallback<Dim>& onStep) {
     }
     Teuchos::RCP<Vector> vNew, aNew;
     integrate(*system, s, h, *du, *v, *a, vNew, aNew);
+    StepRecord record;
+    record.time = t + h;
+    record.dt = h;
+    record.last = endsAt(t + h);
+    record.newton = report;
     // 3. Grid to particles.
-    gridToParticles(*system, *du, *v, *vNew, *aNew);
+    gridToParticles(*system, *du, *v, *vNew, *aNew, record);
     // 4. Accept.
     state.time = t + h;
-    StepRecord record;
-    record.time = state.time;
-    record.dt = h;
-    record.last = done();
-    record.newton = report;
     if (this->recordsEnergies(record))
       record.kineticEnergy = conservedKineticEnergy(*mass, *vNew);
     if (fixedGrid_) {

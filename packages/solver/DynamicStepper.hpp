@@ -16,6 +16,16 @@
 // updated-Lagrangian runs reset the grid every step: nodal v^n, a^n come from the particles
 // (mass-weighted, eq. 1.49, or projected with the consistent mass) and go back to them by
 // FLIP/PIC, and particles that change cell migrate to the rank that owns it.
+//
+// On a fixed grid the particles' u, x and v are the grid's, mapped with weights that do not
+// change, and no explicit step reads them: it takes F from the grid's increment at the
+// reference positions, its force from the stress, and v^n, a^n from the nodes.  An explicit
+// step there commits F and the stress and lets the displacement and velocity wait, summing
+// the grid's increments, until a step whose record carries the energies, an output, a
+// checkpoint or the run's end reads them (syncParticles): one mapping for the steps between,
+// where each step made one (doc/design.md).  Not when the particles carry forces (the
+// forces' work needs u every step), nor when the loads or a boundary condition read the
+// particles' positions (StepperSetup::particlesReadEveryStep).
 
 #include <Teuchos_ParameterList.hpp>
 
@@ -45,6 +55,7 @@ class DynamicStepper : public Stepper<Dim> {
   // leaves the grid.
   void run(const StepCallback<Dim>& onStep) override;
   StepperState checkpointState() const override;
+  void syncParticles() override;
 
   // The explicit stability limit h / c, c the largest wave speed sqrt(E / rho).  Collective.
   static double stableTimeStep(const GridGeometry<Dim>& grid, const ParticleSet<Dim>& particles,
@@ -81,11 +92,23 @@ class DynamicStepper : public Stepper<Dim> {
   // The kinetic energy the integrator conserves, at the new grid velocity v.
   double conservedKineticEnergy(const Vector& mass, const Vector& v) const;
   // 3 of a dynamic step: particles, then their velocities (FLIP/PIC) from v, vNew, aNew.
+  // Where the run lets the particles' motion wait and the step's record (its time, whether
+  // it carries the energies) does not read it, only their deformation is committed and du
+  // joins what waits.
   void gridToParticles(GridSystem<Dim>& system, const Vector& du, const Vector& v,
-                       const Vector& vNew, const Vector& aNew);
+                       const Vector& vNew, const Vector& aNew, const StepRecord& record);
+  bool particlesWait() const override { return !pending_.du.is_null(); }
 
   DynamicSettings settings_;
   bool fixedGrid_;
+  bool particlesMayWait_;  // explicit steps on a fixed grid (above)
+  // The grid increment the particles' motion waits for (null: none), summed up to the step
+  // and time it brings them to.
+  struct Waiting {
+    Teuchos::RCP<Vector> du;
+    int step = 0;
+    double time = 0.0;
+  } pending_;
   Teuchos::RCP<GridSystem<Dim>> fixedSystem_;
   Teuchos::RCP<Vector> u_, v_, a_;   // nodal state of a fixed grid
   Teuchos::RCP<const Vector> mass_;  // the step's lumped mass (a fixed grid's, kept)

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <iterator>
 #include <sstream>
+#include <stdexcept>
 
 #include "assembly/Energy.hpp"
 #include "core/Collective.hpp"
@@ -66,7 +67,8 @@ void Stepper<Dim>::cutBack(const std::string& step, const std::string& logged,
 }
 
 template <int Dim>
-void Stepper<Dim>::gridToParticles(GridSystem<Dim>& system, const Vector& du, double workScale) {
+void Stepper<Dim>::gridToParticles(GridSystem<Dim>& system, const Vector& du, double workScale,
+                                   bool move) {
   auto& particles = setup_.particles;
   supportForces_ = system.supportForces(du);  // before the particles move
   // The body forces' work over the step needs u before it, unless the rank's particles
@@ -76,10 +78,54 @@ void Stepper<Dim>::gridToParticles(GridSystem<Dim>& system, const Vector& du, do
   const auto uBefore = firstRows(uBefore_, "u before the step", loaded ? particles.size() : 0);
   if (loaded)
     Kokkos::deep_copy(uBefore, particles.u);
-  advanceParticles(system, du, setup_.kinematics, particles);
+  if (!move && loaded)
+    throw std::logic_error("the displacement of particles that carry forces cannot wait");
+  if (move)
+    advanceParticles(system, du, setup_.kinematics, particles);
+  else
+    deformParticles(system, du, setup_.kinematics, particles);
   system.commit(du);
   state_.bodyWork +=
       bodyForceWork<Dim>(particles, uBefore, loaded, workScale, *setup_.ownership.comm());
+}
+
+namespace {
+
+// NumericalError naming the first particle whose `name` (a field of ps) is not finite.
+template <int Dim, class View>
+void throwIfNotFinite(const ParticleSet<Dim>& ps, const std::string& when, const char* name,
+                      const View& field) {
+  const long p = firstNonFiniteRow(field, ps.size());
+  if (p >= 0)
+    throw NumericalError(when + ": " + particleLabel(ps, p) + " has a " + name +
+                         " that is not finite after the particle update");
+}
+
+}  // namespace
+
+template <int Dim>
+void Stepper<Dim>::namingCurrentPositions(const std::function<void()>& phase) {
+  try {
+    phase();
+  } catch (const NumericalError&) {
+    if (!particlesWait())
+      throw;
+    syncParticles();
+    phase();
+    throw;
+  }
+}
+
+template <int Dim>
+void Stepper<Dim>::requireFiniteMotion(const std::string& when) const {
+  collectively(*setup_.ownership.comm(), [&] { throwIfMotionNotFinite(when); });
+}
+
+template <int Dim>
+void Stepper<Dim>::throwIfMotionNotFinite(const std::string& when) const {
+  const auto& ps = setup_.particles;
+  throwIfNotFinite(ps, when, "position", ps.x);
+  throwIfNotFinite(ps, when, "velocity", ps.v);
 }
 
 template <int Dim>
@@ -88,15 +134,10 @@ void Stepper<Dim>::requireFiniteParticles(const StepRecord& record) const {
   std::ostringstream when;
   when << "step " << state_.step + 1 << " (t = " << record.time << ")";
   collectively(*setup_.ownership.comm(), [&] {
-    const std::pair<const char*, long> fields[] = {
-        {"position", firstNonFiniteRow(ps.x, ps.size())},
-        {"velocity", firstNonFiniteRow(ps.v, ps.size())},
-        {"deformation gradient", firstNonFiniteRow(ps.F, ps.size())},
-        {"stress", firstNonFiniteRow(ps.stress, ps.size())}};
-    for (const auto& [name, p] : fields)
-      if (p >= 0)
-        throw NumericalError(when.str() + ": " + particleLabel(ps, p) + " has a " + name +
-                             " that is not finite after the particle update");
+    if (!particlesWait())  // otherwise syncParticles checks them
+      throwIfMotionNotFinite(when.str());
+    throwIfNotFinite(ps, when.str(), "deformation gradient", ps.F);
+    throwIfNotFinite(ps, when.str(), "stress", ps.stress);
   });
   // The external work is summed every step, the other energies only where the record has
   // them (Stepper::recordsEnergies).
@@ -124,7 +165,8 @@ void Stepper<Dim>::accept(StepRecord& record, const StepGrid<Dim>& grid,
     record.dissipation = energies.dissipated;
   }
   record.externalWork = state_.bodyWork + contributionWork<Dim>(setup_.contributions);
-  requireFiniteParticles(record);  // nothing that is not finite reaches the outputs
+  // Nothing that is not finite reaches the outputs.
+  namingCurrentPositions([&] { requireFiniteParticles(record); });
   record.step = ++state_.step;
   record.attempts = state_.attempts + 1;
   record.supportForces = supportForces_;

@@ -53,6 +53,11 @@ class Stepper {
   }
   // How often a step's unknowns and graph were built and reused (with retired nodes).
   const LayoutCache<Dim>& layouts() const { return layouts_; }
+  // Brings the particles' displacement, position and velocity up to the grid's where the
+  // stepper let them wait (explicit steps on a fixed grid: DynamicStepper); every reader of
+  // those fields between steps (outputs, checkpoints, the verification) calls it first.
+  // NumericalError when one is not finite.  Collective.
+  virtual void syncParticles() {}
 
  protected:
   // The size of the next step (after cutbacks and regrowth).
@@ -73,8 +78,11 @@ class Stepper {
 
   // 3. Grid to particles and commit; the body forces' work over the step (times workScale,
   // the mean load factor of a static step) is added, and the supports' reactions at the
-  // converged increment are kept for the step's record.
-  void gridToParticles(GridSystem<Dim>& system, const Vector& du, double workScale);
+  // converged increment are kept for the step's record.  With `move` false the particles
+  // take the step's deformation only, and the caller moves them later (their displacement
+  // then waits: particlesWait(); never when they carry forces, whose work needs it).
+  void gridToParticles(GridSystem<Dim>& system, const Vector& du, double workScale,
+                       bool move = true);
 
   // Whether the record of the step being accepted (number state_.step + 1, before accept
   // counts it) carries the energies: every energiesEvery-th step and the last.  The same
@@ -84,8 +92,18 @@ class Stepper {
   }
 
   // NumericalError (on every rank) when a particle's position, velocity, F or stress, or an
-  // energy of the record, is NaN or infinite after the update.  Collective.
+  // energy of the record, is NaN or infinite after the update (the position and velocity
+  // where they are up to date: while they wait, syncParticles checks them).  Collective.
   void requireFiniteParticles(const StepRecord& record) const;
+  // The same for the positions and velocities alone, at the step named `when`.
+  void requireFiniteMotion(const std::string& when) const;
+  // Whether the particles' displacement, position and velocity wait for syncParticles.
+  virtual bool particlesWait() const { return false; }
+  // Runs `phase`.  When it throws NumericalError while the particles' motion waits, the
+  // position by which its message names a particle is not the particle's: syncParticles,
+  // and the phase again, which fails alike (a failing phase commits nothing) and names the
+  // particle where it is.  Collective.
+  void namingCurrentPositions(const std::function<void()>& phase);
 
   // 4. The step is accepted: fills the record's step, attempts and, where recordsEnergies,
   // energies (the kinetic energy is the caller's), regrows the step size, reports, migrates.
@@ -107,6 +125,9 @@ class Stepper {
   typename ParticleSet<Dim>::Vectors uBefore_;
   typename ParticleSet<Dim>::Scalars energyDensity_, dissipationDensity_;
   std::vector<double> supportForces_;  // of the step being accepted
+
+  // requireFiniteMotion's check on this rank (not collective).
+  void throwIfMotionNotFinite(const std::string& when) const;
 };
 
 }  // namespace impm

@@ -142,9 +142,10 @@ def check_field(args, errors):
     return failures
 
 
-def run_tables(args, sets, np, prefix):
+def run_tables(args, sets, np, prefix, exodus=None):
     """Runs the deck with the --set overrides in a fresh directory (iterations not printed)
-    and returns its particle table and history; exits with impm's output when it fails."""
+    and returns its particle table and history; exits with impm's output when it fails.
+    With `exodus` a dict, the time-step variables of the particles' Exodus file go in it."""
     out = tempfile.mkdtemp(prefix=prefix, dir=".")
     r = run_impm(args, args.deck, out, ["Solver/Print Iterations=false"] + sets, np)
     if r.returncode != 0:
@@ -152,8 +153,30 @@ def run_tables(args, sets, np, prefix):
         sys.exit("impm failed")
     particles = read_csv(os.path.join(out, stem(args.deck) + "_particles.csv"))
     history = read_csv(os.path.join(out, stem(args.deck) + "_history.csv"))
+    if exodus is not None:
+        exodus.update(exodus_variables(os.path.join(out, stem(args.deck) + "_particles.exo")))
     shutil.rmtree(out)
     return particles, history
+
+
+def exodus_variables(path):
+    """The time-step variables of an Exodus file by name (nodal ones, the first block's
+    element ones, global ones), each the list of its values over all time steps (ncdump,
+    17 digits)."""
+    dump = subprocess.run(["ncdump", "-p", "9,17", path], capture_output=True, text=True,
+                          check=True).stdout
+    arrays = dict(re.findall(r"\n (\w+) =\s*(.*?);", dump[dump.index("\ndata:"):], re.S))
+    names = lambda key: re.findall(r'"([^"]*)"', arrays.get(key, ""))
+    values = lambda key: [float(v) for v in arrays[key].split(",")]
+    variables = {}
+    for kind, key in (("nod", "vals_nod_var%d"), ("elem", "vals_elem_var%deb1"),
+                      ("glo", None)):
+        for k, name in enumerate(names("name_%s_var" % kind)):
+            if key:
+                variables[name] = values(key % (k + 1))
+            else:
+                variables[name] = values("vals_glo_var")[k::len(names("name_glo_var"))]
+    return variables
 
 
 def uniform(args):
@@ -234,13 +257,41 @@ def history(args):
         sys.exit(1)
 
 
+# The columns of a particle's motion (displacement, position, tracked corners) and of a
+# body's extent: an explicit step on a fixed grid may let the motion wait and map the sum of
+# several steps' increments at once, which moves them by round-off (solver/DynamicStepper).
+MOTION_COLUMN = re.compile(r"^(x|y|u|u_x|u_y|corner\d+_[xy]|[xy]_(min|max)_.*)$")
+
+
+def motion_round_off(full, pairs, rtol=1e-13):
+    """Where the second row of each pair (a run with few history rows) differs from the first
+    (the same step, or place in the table, of the run with a row every step): in a column
+    that is not of the motion, or in one that is by more than rtol of the largest |value| of
+    the motion columns in `full` (the body's extent: a displacement's round-off is that of
+    the positions it is the difference of); one message per row."""
+    motion = [c for c in (full[0] if full else {}) if MOTION_COLUMN.match(c)]
+    scale = max((abs(float(r[c])) for r in full for c in motion), default=0.0)
+    failures = []
+    for a, b in pairs:
+        off = [c for c in b if b[c] != a.get(c) and not (
+            c in motion and abs(float(b[c]) - float(a[c])) <= rtol * scale)]
+        if off:
+            failures.append(", ".join("%s %s (a row every step: %s)" % (c, b[c], a.get(c))
+                                      for c in off))
+    return failures
+
+
 def history_every(args):
     """Output/History Every = N keeps the history rows of steps 0, N, 2N, ... and the last,
     each the very row (every column, as written) of the run with a row per step, and changes
-    nothing else: the particle tables are the same."""
+    nothing else: the particle tables are the same.  Positions and displacements may differ
+    by round-off (MOTION_COLUMN)."""
     every = "Output/History Every=%d" % args.every
-    full_particles, full = run_tables(args, args.set, args.np, "impm-history-every-")
-    thin_particles, thin = run_tables(args, args.set + [every], args.np, "impm-history-every-")
+    full_exodus, thin_exodus = {}, {}
+    full_particles, full = run_tables(args, args.set, args.np, "impm-history-every-",
+                                      full_exodus)
+    thin_particles, thin = run_tables(args, args.set + [every], args.np, "impm-history-every-",
+                                      thin_exodus)
     steps = [int(row["step"]) for row in full]
     expected = [s for s in steps if s % args.every == 0 or s == steps[-1]]
     got = [int(row["step"]) for row in thin]
@@ -248,12 +299,23 @@ def history_every(args):
     if got != expected:
         failures.append("rows at steps %s, expected %s" % (got, expected))
     by_step = {int(row["step"]): row for row in full}
-    for row in thin:
-        if row != by_step.get(int(row["step"])):
-            failures.append("step %s: %s, with a row every step %s"
-                            % (row["step"], row, by_step.get(int(row["step"]))))
-    if thin_particles != full_particles:
-        failures.append("the particle tables differ")
+    pairs = [(by_step.get(int(row["step"]), {}), row) for row in thin]
+    failures += ["history: " + f for f in motion_round_off(full, pairs)]
+    if len(thin_particles) != len(full_particles):
+        failures.append("the particle tables have %d and %d rows"
+                        % (len(thin_particles), len(full_particles)))
+    failures += ["particles: " + f for f in motion_round_off(
+        full_particles, list(zip(full_particles, thin_particles)))]
+    # Every output step's particles (Exodus), also those between the history's rows.
+    scale = max((abs(float(r[c])) for r in full_particles for c in r if MOTION_COLUMN.match(c)),
+                default=0.0)
+    for name, values in full_exodus.items():
+        other = thin_exodus.get(name, [])
+        tolerance = 1e-13 * scale if name.startswith("displacement") else 0.0
+        if len(other) != len(values) or not all(
+                abs(a - b) <= tolerance or (math.isnan(a) and math.isnan(b))
+                for a, b in zip(values, other)):
+            failures.append("particles' Exodus variable %s differs" % name)
     print("%d of %d rows kept (every %d steps and the last)" % (len(got), len(full), args.every))
     for f in failures[:5]:
         print("FAIL:", f)
@@ -441,6 +503,15 @@ def fails(args):
     if len(own) != 1 and args.exit == 1:
         problems.append("the error is not one line (%d lines from impm)" % len(own))
     shutil.rmtree(os.path.dirname(out))
+    if args.same_error_with:
+        # The same deck with other settings that must not change the failure or its message.
+        again = os.path.join(tempfile.mkdtemp(prefix="impm-bad-", dir="."), "out")
+        r2 = run_impm(args, args.deck, again, args.set + args.same_error_with, args.np)
+        own2 = [l for l in r2.stderr.splitlines() if l.startswith("impm:")]
+        if own2[-1:] != own[-1:]:
+            problems.append("with %s the error is %s, not %s"
+                            % (", ".join(args.same_error_with), own2[-1:], own[-1:]))
+        shutil.rmtree(os.path.dirname(again))
     for p in problems:
         print("CHECK FAILED:", p)
     sys.exit(1 if problems else 0)
@@ -670,6 +741,8 @@ def main():
     f.add_argument("--set", action="append", default=[])
     f.add_argument("--outputs-remain", action="store_true",
                    help="a numerical failure: the outputs of the steps done must remain readable")
+    f.add_argument("--same-error-with", action="append", default=[],
+                   help="a --set under which the run must end with the same impm: line")
 
     n = sub.add_parser("newton")
     n.add_argument("--deck", required=True)
