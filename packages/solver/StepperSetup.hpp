@@ -38,9 +38,9 @@ struct StepperSetup {
   // rows).  Each costs passes over the particles and reductions, as much as half a residual
   // evaluation of an explicit step.
   int energiesEvery = 1;
-  // Whether the loads (formulas of x, a distributed load per length) or a boundary condition
-  // read the particles' positions every step; if not, explicit steps on a fixed grid may
-  // let the particles' motion wait (solver/DynamicStepper.hpp).
+  // Whether the loads (a formula, which may read x) or a boundary condition read the
+  // particles' positions every step; if not, explicit steps on a fixed grid may let the
+  // particles' motion wait (solver/DynamicStepper.hpp).
   bool particlesReadEveryStep = true;
 };
 

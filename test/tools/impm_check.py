@@ -263,14 +263,20 @@ def history(args):
 MOTION_COLUMN = re.compile(r"^(x|y|u|u_x|u_y|corner\d+_[xy]|[xy]_(min|max)_.*)$")
 
 
+def motion_scale(rows):
+    """The largest |value| of the motion columns (the body's extent: a displacement's
+    round-off is that of the positions it is the difference of)."""
+    return max((abs(float(r[c])) for r in rows for c in r if MOTION_COLUMN.match(c)),
+               default=0.0)
+
+
 def motion_round_off(full, pairs, rtol=1e-13):
     """Where the second row of each pair (a run with few history rows) differs from the first
     (the same step, or place in the table, of the run with a row every step): in a column
-    that is not of the motion, or in one that is by more than rtol of the largest |value| of
-    the motion columns in `full` (the body's extent: a displacement's round-off is that of
-    the positions it is the difference of); one message per row."""
+    that is not of the motion, or in one that is by more than rtol of motion_scale(full);
+    one message per row."""
     motion = [c for c in (full[0] if full else {}) if MOTION_COLUMN.match(c)]
-    scale = max((abs(float(r[c])) for r in full for c in motion), default=0.0)
+    scale = motion_scale(full)
     failures = []
     for a, b in pairs:
         off = [c for c in b if b[c] != a.get(c) and not (
@@ -307,11 +313,9 @@ def history_every(args):
     failures += ["particles: " + f for f in motion_round_off(
         full_particles, list(zip(full_particles, thin_particles)))]
     # Every output step's particles (Exodus), also those between the history's rows.
-    scale = max((abs(float(r[c])) for r in full_particles for c in r if MOTION_COLUMN.match(c)),
-                default=0.0)
     for name, values in full_exodus.items():
         other = thin_exodus.get(name, [])
-        tolerance = 1e-13 * scale if name.startswith("displacement") else 0.0
+        tolerance = 1e-13 * motion_scale(full_particles) if name.startswith("displacement") else 0
         if len(other) != len(values) or not all(
                 abs(a - b) <= tolerance or (math.isnan(a) and math.isnan(b))
                 for a, b in zip(values, other)):
