@@ -377,7 +377,7 @@ std::unique_ptr<Output<Dim>> Simulation<Dim>::startOutput(const History<Dim>& hi
                           : method_ == Method::cpdi     ? Domains::parallelogram
                           : method_ == Method::gimp     ? Domains::box
                                                         : Domains::none;
-  particles_.updateDerived();
+  particles_.bringUpToDate();
   const OutputResume resume{restored_ ? restored_->stepper.step : 0,
                             restored_ ? restored_->exodusSteps : 0};
   std::unique_ptr<Output<Dim>> output;
@@ -456,14 +456,12 @@ std::vector<std::string> Simulation<Dim>::run() {
     printProgress(r, F);
     if (output->writesFields() && (output->due(r.step) || r.last)) {
       IMPM_TIMER("output");
-      stepper_->syncParticles();
-      particles_.updateDerived();  // output-only fields
+      particles_.bringUpToDate();
       collectively(*comm_,
                    [&] { output->writeFields(r.time, particles_, gridFields_->values(), F); });
     }
     if (checkpoints.due(r.step, r.last)) {
-      stepper_->syncParticles();
-      particles_.updateDerived();  // the drawn domains, as the outputs have them
+      particles_.bringUpToDate();  // the drawn domains too, as the outputs have them
       writeCheckpoint(checkpoints, r.step, *stepper_, *output);
       checkpointed = r.step;
     }
@@ -480,13 +478,12 @@ std::vector<std::string> Simulation<Dim>::run() {
     // committed): the checkpoint is of the last accepted step.
     const auto& state = stepper_->state();
     if (checkpointed != state.step) {
-      stepper_->syncParticles();
-      particles_.updateDerived();
+      particles_.bringUpToDate();
       writeCheckpoint(checkpoints, state.step, *stepper_, *output);
     }
     throw RunStopped(state.step, state.time, !betweenSteps, checkpoints.pathOf(state.step));
   }
-  stepper_->syncParticles();  // the verification reads them
+  particles_.bringUpToDate();  // for the verification
   return finish(finalTime, output->files(), stepper_->layouts());
 }
 

@@ -100,9 +100,16 @@ class ParticleSet {
   std::vector<FieldSpec> specs() const;
 
   // Fields computed from others for output: J and the 1-D strain from F, then the rules
-  // added (a material's sigma_zz), in order.  Run before every output.
+  // added (a material's sigma_zz), in order.
   void addDerivation(std::function<void(ParticleSet&)> rule) { derivations_.push_back(rule); }
-  void updateDerived();
+  // The values someone holds back from the fields and how they deliver them (null: no one):
+  // the motion of explicit steps on a fixed grid, which waits on the grid for a reader
+  // (solver/DynamicStepper.hpp).
+  void setCatchUp(std::function<void()> catchUp) { catchUp_ = std::move(catchUp); }
+  // Every reader of the fields between steps (outputs, checkpoints, the verification) calls
+  // this first: the values held back, then the derived fields.  Collective when a catch-up
+  // is set (it checks the delivered values on every rank).
+  void bringUpToDate();
 
   // The particles of each material (index lists into the fields), rebuilt from `material`
   // when materials are assigned and after every migration.
@@ -128,6 +135,7 @@ class ParticleSet {
   std::vector<Declared> declared_;
   std::vector<Indices> members_;
   std::vector<std::function<void(ParticleSet&)>> derivations_;
+  std::function<void()> catchUp_;
 };
 
 // A new field view of n particles shaped like `view` (the same components), zeroed; or, for
@@ -331,7 +339,9 @@ void ParticleSet<Dim, Space>::copyFrom(const ParticleSet<Dim, OtherSpace>& other
 }
 
 template <int Dim, class Space>
-void ParticleSet<Dim, Space>::updateDerived() {
+void ParticleSet<Dim, Space>::bringUpToDate() {
+  if (catchUp_)
+    catchUp_();
   auto Fp = F;
   auto Jp = J;
   auto strainp = strain;

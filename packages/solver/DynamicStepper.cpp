@@ -47,6 +47,15 @@ DynamicStepper<Dim>::DynamicStepper(const DynamicSettings& settings, StepperSetu
     settings_.mass = MassType::lumped;
     this->nodeCoupling_ = NodeCoupling::self;  // the Jacobian is c0 M: diagonal in the nodes
   }
+  // Whoever reads the particles between steps brings them up to date first.
+  if (particlesMayWait_)
+    this->setup_.particles.setCatchUp([this] { syncParticles(); });
+}
+
+template <int Dim>
+DynamicStepper<Dim>::~DynamicStepper() {
+  if (particlesMayWait_)
+    this->setup_.particles.setCatchUp(nullptr);
 }
 
 template <int Dim>
@@ -314,9 +323,7 @@ void DynamicStepper<Dim>::syncParticles() {
   const auto v = vo->getLocalViewDevice(Tpetra::Access::ReadOnly);
   gridToParticleVelocity<Dim>(fixedSystem_->particleGridMap(), fixedSystem_->entryDofs(), v, v,
                               ao->getLocalViewDevice(Tpetra::Access::ReadOnly), 0.0, particles);
-  std::ostringstream when;
-  when << "step " << pending_.step << " (t = " << pending_.time << ")";
-  this->requireFiniteMotion(when.str());
+  this->requireFiniteMotion(pending_.step, pending_.time);
 }
 
 template <int Dim>

@@ -22,8 +22,8 @@
 // reference positions, its force from the stress, and v^n, a^n from the nodes.  An explicit
 // step there commits F and the stress and lets the displacement and velocity wait, summing
 // the grid's increments, until a step whose record carries the energies, an output, a
-// checkpoint or the run's end reads them (syncParticles): one mapping for the steps between,
-// where each step made one (doc/design.md).  Not when the particles carry forces (the
+// checkpoint or the run's end reads them (ParticleSet::bringUpToDate): one mapping for the steps
+// between, where each step made one (doc/design.md).  Not when the particles carry forces (the
 // forces' work needs u every step), nor when the loads or a boundary condition read the
 // particles' positions (StepperSetup::particlesReadEveryStep).
 
@@ -48,6 +48,7 @@ template <int Dim>
 class DynamicStepper : public Stepper<Dim> {
  public:
   DynamicStepper(const DynamicSettings& settings, StepperSetup<Dim> setup);
+  ~DynamicStepper() override;
 
   // Steps to the final time (from t = 0, or from a restored state); calls onStep after each
   // accepted step.  A step whose Newton solve fails is retried with half the time step, down
@@ -55,7 +56,6 @@ class DynamicStepper : public Stepper<Dim> {
   // leaves the grid.
   void run(const StepCallback<Dim>& onStep) override;
   StepperState checkpointState() const override;
-  void syncParticles() override;
 
   // The explicit stability limit h / c, c the largest wave speed sqrt(E / rho).  Collective.
   static double stableTimeStep(const GridGeometry<Dim>& grid, const ParticleSet<Dim>& particles,
@@ -98,6 +98,8 @@ class DynamicStepper : public Stepper<Dim> {
   void gridToParticles(GridSystem<Dim>& system, const Vector& du, const Vector& v,
                        const Vector& vNew, const Vector& aNew, const StepRecord& record);
   bool particlesWait() const override { return !pending_.du.is_null(); }
+  // Maps what waits (the particles' ParticleSet::bringUpToDate runs it for every reader).
+  void syncParticles() override;
 
   DynamicSettings settings_;
   bool fixedGrid_;

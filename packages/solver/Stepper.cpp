@@ -101,6 +101,13 @@ void throwIfNotFinite(const ParticleSet<Dim>& ps, const std::string& when, const
                          " that is not finite after the particle update");
 }
 
+// How the particle checks' messages name a step.
+std::string stepLabel(int step, double time) {
+  std::ostringstream s;
+  s << "step " << step << " (t = " << time << ")";
+  return s.str();
+}
+
 }  // namespace
 
 template <int Dim>
@@ -117,8 +124,8 @@ void Stepper<Dim>::namingCurrentPositions(const std::function<void()>& phase) {
 }
 
 template <int Dim>
-void Stepper<Dim>::requireFiniteMotion(const std::string& when) const {
-  collectively(*setup_.ownership.comm(), [&] { throwIfMotionNotFinite(when); });
+void Stepper<Dim>::requireFiniteMotion(int step, double time) const {
+  collectively(*setup_.ownership.comm(), [&] { throwIfMotionNotFinite(stepLabel(step, time)); });
 }
 
 template <int Dim>
@@ -131,13 +138,12 @@ void Stepper<Dim>::throwIfMotionNotFinite(const std::string& when) const {
 template <int Dim>
 void Stepper<Dim>::requireFiniteParticles(const StepRecord& record) const {
   const auto& ps = setup_.particles;
-  std::ostringstream when;
-  when << "step " << state_.step + 1 << " (t = " << record.time << ")";
+  const std::string when = stepLabel(state_.step + 1, record.time);
   collectively(*setup_.ownership.comm(), [&] {
     if (!particlesWait())  // otherwise syncParticles checks them
-      throwIfMotionNotFinite(when.str());
-    throwIfNotFinite(ps, when.str(), "deformation gradient", ps.F);
-    throwIfNotFinite(ps, when.str(), "stress", ps.stress);
+      throwIfMotionNotFinite(when);
+    throwIfNotFinite(ps, when, "deformation gradient", ps.F);
+    throwIfNotFinite(ps, when, "stress", ps.stress);
   });
   // The external work is summed every step, the other energies only where the record has
   // them (Stepper::recordsEnergies).
@@ -148,7 +154,7 @@ void Stepper<Dim>::requireFiniteParticles(const StepRecord& record) const {
   const std::size_t computed = record.hasEnergies ? std::size(energies) : 1;
   for (std::size_t k = 0; k < computed; ++k)
     if (!std::isfinite(energies[k].second))
-      throw NumericalError(when.str() + ": the " + energies[k].first + " is not finite");
+      throw NumericalError(when + ": the " + energies[k].first + " is not finite");
 }
 
 template <int Dim>

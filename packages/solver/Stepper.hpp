@@ -53,11 +53,6 @@ class Stepper {
   }
   // How often a step's unknowns and graph were built and reused (with retired nodes).
   const LayoutCache<Dim>& layouts() const { return layouts_; }
-  // Brings the particles' displacement, position and velocity up to the grid's where the
-  // stepper let them wait (explicit steps on a fixed grid: DynamicStepper); every reader of
-  // those fields between steps (outputs, checkpoints, the verification) calls it first.
-  // NumericalError when one is not finite.  Collective.
-  virtual void syncParticles() {}
 
  protected:
   // The size of the next step (after cutbacks and regrowth).
@@ -95,10 +90,15 @@ class Stepper {
   // energy of the record, is NaN or infinite after the update (the position and velocity
   // where they are up to date: while they wait, syncParticles checks them).  Collective.
   void requireFiniteParticles(const StepRecord& record) const;
-  // The same for the positions and velocities alone, at the step named `when`.
-  void requireFiniteMotion(const std::string& when) const;
+  // The same for the positions and velocities alone, as they are at step `step`, time `time`.
+  void requireFiniteMotion(int step, double time) const;
   // Whether the particles' displacement, position and velocity wait for syncParticles.
   virtual bool particlesWait() const { return false; }
+  // Brings the particles' displacement, position and velocity up to the grid's where the
+  // stepper let them wait (explicit steps on a fixed grid: DynamicStepper, which has the
+  // particle set run it for every reader between steps, ParticleSet::bringUpToDate).
+  // NumericalError when one is not finite.  Collective.
+  virtual void syncParticles() {}
   // Runs `phase`.  When it throws NumericalError while the particles' motion waits, the
   // position by which its message names a particle is not the particle's: syncParticles,
   // and the phase again, which fails alike (a failing phase commits nothing) and names the
