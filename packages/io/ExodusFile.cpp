@@ -4,6 +4,7 @@
 #include <netcdf.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <filesystem>
 #include <stdexcept>
@@ -76,6 +77,53 @@ void putVariableNames(int id, ex_entity_type type, const std::vector<std::string
         "variable names", said);
 }
 
+// Everything the file's header holds, defined before any bulk data is written.  A netCDF-3
+// file whose header grows after data was written moves all of it behind the header (and a new
+// record variable reshuffles every record), in the library's 8 kB blocks; the element
+// variables that exodusII would define one by one at their first write moved the whole file
+// once each.  `variables`: the nodal, element and global variables' names.
+void defineContents(int id, const ExodusMesh& mesh,
+                    const std::array<std::vector<std::string>, 3>& variables,
+                    const std::string& path, const CapturedOutput& said) {
+  // 16 kB of room in the header for the definitions to come (exodusII 6.02's file id is the
+  // netCDF id).  Asked for here, it moves the coordinates' still unwritten extent once and
+  // the definitions after it move nothing; asked for right after ex_create, it was not kept.
+  int status = nc_redef(id);
+  if (status == NC_NOERR)
+    status = nc__enddef(id, 16 << 10, 4, 0, 4);
+  if (status != NC_NOERR)
+    throw FileError(path, std::string("cannot write the Exodus file (header space: ") +
+                              nc_strerror(status) + ")");
+  check(ex_put_block(id, EX_ELEM_BLOCK, 1, mesh.elementType.c_str(),
+                     static_cast<int64_t>(mesh.numElements()), mesh.nodesPerElement, 0, 0, 0),
+        path, "element block", said);
+  putVariableNames(id, EX_NODAL, variables[0], path, said);
+  putVariableNames(id, EX_ELEM_BLOCK, variables[1], path, said);
+  putVariableNames(id, EX_GLOBAL, variables[2], path, said);
+  if (!variables[1].empty()) {  // defines the block's element variables, all at once
+    std::vector<int> everyVariable(variables[1].size(), 1);
+    check(ex_put_truth_table(id, EX_ELEM_BLOCK, 1, static_cast<int>(everyVariable.size()),
+                             everyVariable.data()),
+          path, "element variables", said);
+  }
+  std::vector<std::string> axes = {"x", "y", "z"};
+  axes.resize(mesh.dimension);
+  auto axisNames = cStrings(axes);
+  check(ex_put_coord_names(id, axisNames.data()), path, "coordinate names", said);
+  if (!mesh.elementIds.empty())  // defines its variable as it writes it
+    check(ex_put_id_map(id, EX_ELEM_MAP, mesh.elementIds.data()), path, "element ids", said);
+}
+
+void writeMesh(int id, const ExodusMesh& mesh, const std::string& path,
+               const CapturedOutput& said) {
+  const double* c[3] = {nullptr, nullptr, nullptr};
+  for (int d = 0; d < mesh.dimension; ++d)
+    c[d] = mesh.coords[d].data();
+  check(ex_put_coord(id, c[0], c[1], c[2]), path, "coordinates", said);
+  check(ex_put_conn(id, EX_ELEM_BLOCK, 1, mesh.connectivity.data(), nullptr, nullptr), path,
+        "connectivity", said);
+}
+
 }  // namespace
 
 ExodusFile::ExodusFile(const std::string& path, const std::string& title, const ExodusMesh& mesh,
@@ -119,24 +167,8 @@ void ExodusFile::create(const std::string& path, const std::string& title, const
   check(ex_put_init(id, title.c_str(), mesh.dimension, static_cast<int64_t>(numNodes_),
                     static_cast<int64_t>(numElements_), 1, 0, 0),
         path, "init", said);
-  const double* c[3] = {nullptr, nullptr, nullptr};
-  for (int d = 0; d < mesh.dimension; ++d)
-    c[d] = mesh.coords[d].data();
-  check(ex_put_coord(id, c[0], c[1], c[2]), path, "coordinates", said);
-  std::vector<std::string> axes = {"x", "y", "z"};
-  axes.resize(mesh.dimension);
-  auto axisNames = cStrings(axes);
-  check(ex_put_coord_names(id, axisNames.data()), path, "coordinate names", said);
-  check(ex_put_block(id, EX_ELEM_BLOCK, 1, mesh.elementType.c_str(),
-                     static_cast<int64_t>(numElements_), mesh.nodesPerElement, 0, 0, 0),
-        path, "element block", said);
-  check(ex_put_conn(id, EX_ELEM_BLOCK, 1, mesh.connectivity.data(), nullptr, nullptr), path,
-        "connectivity", said);
-  if (!mesh.elementIds.empty())
-    check(ex_put_id_map(id, EX_ELEM_MAP, mesh.elementIds.data()), path, "element ids", said);
-  putVariableNames(id, EX_NODAL, nodalVariables, path, said);
-  putVariableNames(id, EX_ELEM_BLOCK, elementVariables, path, said);
-  putVariableNames(id, EX_GLOBAL, globalVariables, path, said);
+  defineContents(id, mesh, {nodalVariables, elementVariables, globalVariables}, path, said);
+  writeMesh(id, mesh, path, said);
   check(ex_close(file.release()), path, "close", said);
 }
 

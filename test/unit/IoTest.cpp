@@ -8,6 +8,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iterator>
@@ -139,6 +140,29 @@ TEST(Exodus, MeshVariablesAndTimeStepsReadBack) {
   ex_get_variable_names(id, EX_NODAL, 1, names);
   EXPECT_STREQ(name, "displacementX");
   ex_close(id);
+  std::remove(path.c_str());
+}
+
+// A netCDF-3 file whose header grows after data is written moves all of it (in 8 kB blocks):
+// the file is fully defined when it is made, so that a step adds its record and nothing else.
+TEST(Exodus, AStepAddsItsRecordOnly) {
+  const std::string path = scratch("record.exo");
+  ExodusMesh mesh;
+  mesh.dimension = 2;
+  mesh.coords = {{0.0, 1.0, 1.0, 0.0}, {0.0, 0.0, 1.0, 1.0}};
+  mesh.elementType = "QUAD4";
+  mesh.nodesPerElement = 4;
+  mesh.connectivity = {1, 2, 3, 4};
+  mesh.elementIds = {7};
+  ExodusFile file(path, "test", mesh, {"displacementX", "displacementY"}, {"a", "b", "c"}, {"F0"});
+  const auto size = [&] { return std::filesystem::file_size(path); };
+  const auto made = size();
+  file.append(0.0, {{0, 0, 0, 0}, {0, 0, 0, 0}}, {{1}, {2}, {3}}, {0.0});
+  // time, 2 x 4 nodal values, 3 element values, 1 global value
+  const std::uintmax_t record = (1 + 2 * 4 + 3 + 1) * sizeof(double);
+  EXPECT_EQ(size() - made, record);
+  file.append(1.0, {{0, 0, 0, 0}, {0, 0, 0, 0}}, {{1}, {2}, {3}}, {0.5});
+  EXPECT_EQ(size() - made, 2 * record);
   std::remove(path.c_str());
 }
 
