@@ -245,6 +245,7 @@ int main(int argc, char** argv) {
   kept.push_back(nullptr);
   char** keptArgs = kept.data();
   Tpetra::ScopeGuard scope(&keptCount, &keptArgs);  // removes the --kokkos-* options
+  impm::adviseHugePages();                          // once Kokkos can report its allocations
   auto comm = Tpetra::getDefaultComm();
   impm::installStopHandlers();  // after MPI and Kokkos, so that theirs do not replace impm's
   const bool root = comm->getRank() == 0;

@@ -573,3 +573,47 @@ TEST(Diagnostics, FirstNonFiniteRowFindsEveryKindAndPositionAndOnlyThose) {
 
 }  // namespace
 }  // namespace impm
+
+#include <cstdint>
+#include <fstream>
+#include <sstream>
+
+#include <Kokkos_Core.hpp>
+
+#include "core/MemoryPolicy.hpp"
+
+namespace impm {
+namespace {
+
+// The kernel's flags of the mapping that holds address, from /proc/self/smaps ("hg": the
+// mapping asked for transparent huge pages).
+std::string mappingFlags(const void* address) {
+  const auto at = reinterpret_cast<std::uintptr_t>(address);
+  std::ifstream smaps("/proc/self/smaps");
+  bool inside = false;
+  for (std::string line; std::getline(smaps, line);) {
+    std::uintptr_t begin = 0, end = 0;
+    char dash = 0;
+    if (std::istringstream(line) >> std::hex >> begin >> dash >> end && dash == '-')
+      inside = begin <= at && at < end;
+    else if (inside && line.rfind("VmFlags:", 0) == 0)
+      return line.substr(8) + " ";
+  }
+  return "";
+}
+
+TEST(MemoryPolicy, ViewsMadeAfterTheAdviceAskForHugePages) {
+  keepFreedMemory();  // as impm does: large blocks from the heap
+  if (!adviseHugePages())
+    GTEST_SKIP() << "no heap advice here (not glibc on Linux, huge pages off, or a sanitizer)";
+  // 32 MB, then 128 MB: more than the heap holds free, so it grows for each.  A view may
+  // begin in the free top of the heap as it was; its middle is in what the heap grew by.
+  for (const std::size_t n : {std::size_t(4) << 20, std::size_t(16) << 20}) {
+    Kokkos::View<double*, Kokkos::HostSpace> big("big", n);
+    const std::string flags = mappingFlags(big.data() + n / 2);
+    EXPECT_NE(flags.find(" hg "), std::string::npos) << n << " doubles, flags:" << flags;
+  }
+}
+
+}  // namespace
+}  // namespace impm
