@@ -36,12 +36,14 @@ namespace {
 std::uintptr_t heapBase = 0;
 std::uintptr_t markedTop = 0;
 
+// Once per growth: the advice is a hint, and a refusal (a range the kernel will not mark)
+// would be refused again.
 void markHeap() {
   const auto top = reinterpret_cast<std::uintptr_t>(sbrk(0));
   if (top <= markedTop)
     return;
-  if (madvise(reinterpret_cast<void*>(heapBase), top - heapBase, MADV_HUGEPAGE) == 0)
-    markedTop = top;
+  madvise(reinterpret_cast<void*>(heapBase), top - heapBase, MADV_HUGEPAGE);
+  markedTop = top;
 }
 
 void markHeapOnAllocation(Kokkos_Profiling_SpaceHandle, const char*, const void*, uint64_t) {

@@ -17,7 +17,7 @@ void keepFreedMemory();
 // (the particles' fields, Tpetra's vectors and matrices) passes that event before anything
 // writes to it.  The heap then grows 64 MB ahead of what it holds, so that the vectors and
 // arrays Kokkos does not see land in marked memory too.  Fewer page faults and TLB misses:
-// the 64 x 512 column 5% faster, the colliding disks at 10^6 particles 16% (doc/performance.md).
+// the 64 x 512 column 6% faster, the colliding disks at 10^6 particles 16% (doc/performance.md).
 // Call after Kokkos is initialized, and after keepFreedMemory: blocks that glibc serves with
 // mmap are not in the heap and not marked.  Returns false, changing nothing, off Linux and glibc,
 // under a kernel with huge pages off, and when a Kokkos tool is loaded (its allocation
