@@ -163,11 +163,28 @@ bool namesMueLu(const Teuchos::ParameterList& deck, const std::string& prefix) {
   return false;
 }
 
+// The preconditioner type a deck's list chooses: named, or its one configured sublist.
+std::string chosenPreconditioner(const Teuchos::ParameterList& deck) {
+  if (deck.isType<std::string>("Preconditioner Type"))
+    return deck.get<std::string>("Preconditioner Type");
+  if (deck.isSublist("Preconditioner Types") &&
+      deck.sublist("Preconditioner Types").numParams() == 1)
+    return deck.sublist("Preconditioner Types").name(deck.sublist("Preconditioner Types").begin());
+  return {};
+}
+
 }  // namespace
 
 Teuchos::ParameterList mergedLinearSolverParameters(const Teuchos::ParameterList& deck,
                                                     OperatorKind kind, int dim, int ranks) {
   auto p = defaultLinearSolverParameters(kind, dim, ranks);
+  // A deck that chooses MueLu where the default is another preconditioner (2-D grids under
+  // 4000 nodes, mass-dominated steps) starts from impm's multigrid settings for the problem
+  // (Dim unknowns per node, the smoother, the coarse solve), not from MueLu's own defaults
+  // (one unknown per node: 50-63 Krylov iterations per load step on columns 16-20 cells
+  // wide, against 16-18 with these settings).
+  if (chosenPreconditioner(deck) == "MueLu" && p.get<std::string>("Preconditioner Type") != "MueLu")
+    smoothedAggregation(p, dim, ranks);
   // The default's Ifpack2 settings belong to its Prec Type: a deck that names another one
   // starts from none (ILUT's fill level means nothing to a block relaxation, which rejects
   // it), while a deck that tunes the default's own Prec Type keeps the rest of them.
@@ -178,15 +195,15 @@ Teuchos::ParameterList mergedLinearSolverParameters(const Teuchos::ParameterList
     const auto& ifpack2 = list.sublist("Preconditioner Types").sublist("Ifpack2");
     return ifpack2.isType<std::string>("Prec Type") ? ifpack2.get<std::string>("Prec Type") : "";
   };
-  const std::string chosen = precType(deck);
-  if (!chosen.empty() && chosen != precType(p))
+  const std::string ifpack2Type = precType(deck);
+  if (!ifpack2Type.empty() && ifpack2Type != precType(p))
     p.sublist("Preconditioner Types").sublist("Ifpack2").remove("Ifpack2 Settings", false);
   // Likewise the default's MueLu smoother is one choice: a deck that names any `smoother:`
   // parameter starts from none (MueLu would take the default's `smoother: pre type` over the
   // deck's `smoother: type`); and a deck that names its coarse solver drops the default's
   // coarse parameters, which belong to the default's coarse type (Gauss-Seidel sweeps mean
   // nothing to a direct solver, which rejects them).
-  if (p.get<std::string>("Preconditioner Type") == "MueLu") {  // the default chose MueLu
+  if (p.get<std::string>("Preconditioner Type") == "MueLu") {  // impm's MueLu settings
     auto& muelu = p.sublist("Preconditioner Types").sublist("MueLu");
     if (namesMueLu(deck, "smoother:"))
       for (const char* key : {"smoother: pre type", "smoother: pre params", "smoother: post type",
@@ -196,11 +213,8 @@ Teuchos::ParameterList mergedLinearSolverParameters(const Teuchos::ParameterList
       muelu.remove("coarse: params", false);
   }
   p.setParameters(deck);
-  if (!deck.isParameter("Preconditioner Type") && deck.isSublist("Preconditioner Types")) {
-    const auto& types = deck.sublist("Preconditioner Types");
-    if (types.numParams() == 1)
-      p.set("Preconditioner Type", types.name(types.begin()));
-  }
+  if (const auto chosen = chosenPreconditioner(deck); !chosen.empty())
+    p.set("Preconditioner Type", chosen);
   return p;
 }
 

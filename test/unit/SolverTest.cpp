@@ -610,6 +610,32 @@ Teuchos::ParameterList mergedMueLu(int ranks, const std::string& key, const T& v
 // The default's smoother is a forward sweep before and a backward one after; a deck that
 // names any smoother parameter replaces it whole (MueLu takes `smoother: pre type` over
 // `smoother: type`), one that names other MueLu parameters keeps it.
+// A deck that chooses MueLu where impm's default is another preconditioner (grids under
+// 4000 nodes, mass-dominated steps) gets impm's multigrid settings for the dimension, not
+// MueLu's own (one unknown per node: 50-63 Krylov iterations per load step on the 2-D columns
+// 16-20 cells wide against 16-18 with these settings, doc/performance.md); chosen by name
+// or by configuring the MueLu sublist alone.
+TEST(LinearSolver, DeckChoosingMueLuStartsFromImpmsSettings) {
+  Teuchos::ParameterList named;
+  named.set("Preconditioner Type", std::string("MueLu"));
+  Teuchos::ParameterList configured;
+  configured.sublist("Preconditioner Types").sublist("MueLu").set("verbosity", std::string("none"));
+  for (const auto kind : {OperatorKind::small, OperatorKind::massDominated})
+    for (const auto* deck : {&named, &configured}) {
+      const auto p = mergedLinearSolverParameters(*deck, kind, 2, 1);
+      ASSERT_EQ(p.get<std::string>("Preconditioner Type"), "MueLu");
+      const auto& muelu = p.sublist("Preconditioner Types").sublist("MueLu");
+      EXPECT_EQ(muelu.get<int>("number of equations"), 2);
+      EXPECT_EQ(muelu.get<std::string>("smoother: pre type"), "RELAXATION");
+      EXPECT_EQ(muelu.get<std::string>("coarse: type"), "KLU2");
+    }
+  // Another choice leaves the default's list as it was: no MueLu settings are added.
+  Teuchos::ParameterList ilut;
+  ilut.set("Preconditioner Type", std::string("Ifpack2"));
+  const auto p = mergedLinearSolverParameters(ilut, OperatorKind::small, 2, 1);
+  EXPECT_FALSE(p.sublist("Preconditioner Types").isSublist("MueLu"));
+}
+
 TEST(LinearSolver, DeckSmootherReplacesTheDefaultOne) {
   const auto kept = mergedMueLu(1, "coarse: max size", 500);
   EXPECT_EQ(kept.get<int>("coarse: max size"), 500);
