@@ -259,8 +259,10 @@ NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vecto
         reuse->setNullSpace(nullptr);
     }
   } lease{reuse_.get()};
-  if (lease.reuse)
+  if (lease.reuse) {
     lease.reuse->setNullSpace([model] { return model->nearNullSpace(); });
+    lease.reuse->startSolve();
+  }
   auto group = Teuchos::rcp(new NOX::Thyra::Group(NOX::Thyra::Vector(guess), me, me->create_W_op(),
                                                   lows_, prec_, reuse_, Teuchos::null));
   try {

@@ -20,6 +20,10 @@ void ReusingPreconditionerFactory::recordSolve(int iterations, bool converged) {
   lastConverged_ = converged;
   if (firstIterations_ < 0)
     firstIterations_ = iterations;
+  if (carry_.judging) {
+    carry_.judging = false;
+    carry_.stopped = worthRebuilding();
+  }
 }
 
 void ReusingPreconditionerFactory::startOver(Thyra::PreconditionerBase<double>* prec) const {
@@ -79,7 +83,13 @@ void ReusingPreconditionerFactory::initializePrec(
   // Collective (every rank asks for the preconditioner together).
   const bool sameUnknowns = !map_.is_null() && map->isSameAs(*map_);
   const bool built = !prec->getUnspecifiedPrecOp().is_null();
-  if (sameUnknowns && built && !worthRebuilding()) {
+  bool keep = sameUnknowns && built && !worthRebuilding();
+  if (solveStarted_) {  // the first request of a Newton solve: a carry
+    solveStarted_ = false;
+    keep = keep && !carry_.stopped;
+    carry_.judging = keep;
+  }
+  if (keep) {
     ++counts_.reuses;
     if (muelu_)  // the only kind kept across retired nodes (Stepper)
       serveKept(*op, prec);

@@ -10,6 +10,8 @@
 //     when the last linear solve failed;
 //   - when the last solve took more than `Rebuild Factor` times the iterations of the
 //     first solve after the last build (at least `Minimum Iterations`);
+//   - at the start of a Newton solve (a new step), once a preconditioner carried into a
+//     step went past that limit in its first solve (CarryState below);
 //   - otherwise the preconditioner built from an earlier Jacobian stays: the Krylov solve
 //     still solves the current Jacobian to its tolerance, so only the cost changes.  Rows
 //     that hold their diagonal alone (nodes retired since the build) are then solved
@@ -52,13 +54,19 @@ class ReusingPreconditionerFactory : public Thyra::PreconditionerFactoryBase<dou
 
   // The near-null space of the problem being solved (set by the Newton solver per solve).
   void setNullSpace(NullSpace nullSpace) { nullSpace_ = std::move(nullSpace); }
+  // A new Newton solve (a step, or a step's retry) begins: its first request decides
+  // whether the kept preconditioner is carried into it.
+  void startSolve() { solveStarted_ = true; }
   // The outcome of the linear solve that used the current preconditioner.
   void recordSolve(int iterations, bool converged);
   bool isMueLu() const { return muelu_; }
   ReuseCounts counts() const { return counts_; }
   // The next request builds a new preconditioner from scratch, as a fresh run would (a run
   // restarted from a checkpoint then follows the uninterrupted run's path bit for bit).
-  void forget() { map_ = Teuchos::null; }
+  void forget() {
+    map_ = Teuchos::null;
+    carry_ = CarryState{};
+  }
   // Frees `prec` (its hierarchy or factors, and its hold on the last Jacobian) unless it
   // was built for the unknowns `next`: one that cannot serve them would otherwise stay
   // alive while the next system is built.  Collective.
@@ -107,6 +115,18 @@ class ReusingPreconditionerFactory : public Thyra::PreconditionerFactoryBase<dou
   mutable int lastIterations_ = 0;
   mutable bool lastConverged_ = true;
   mutable ReuseCounts counts_;
+  // A preconditioner kept from one Newton solve serves the next one's first linear solve (is
+  // carried into the next step) while that pays.  The steps of a run move the particles by
+  // much the same amounts, so one carry whose first solve goes past the rebuild limit stops
+  // the carries until the preconditioner is forgotten (a checkpoint): on the 10^6-particle
+  // column they took 66-443 Krylov iterations against about 20 for a new hierarchy, and the
+  // long solves' round-off cost a second Newton iteration.  Reuse within a step goes on.
+  struct CarryState {
+    bool stopped = false;  // no more carries
+    bool judging = false;  // the current preconditioner was carried; its first solve decides
+  };
+  mutable CarryState carry_;
+  mutable bool solveStarted_ = false;
 };
 
 }  // namespace impm

@@ -693,9 +693,6 @@ TEST(LinearSolver, CgWithMueLu) {
 namespace impm {
 namespace {
 
-// The explicit step's elimination against the direct solution: 6 nodal unknowns with a
-// diagonal block and 2 extras coupled to a few of them (as Robin ends are), spread over the
-// ranks: x must solve J x = b to round-off.
 // A kept preconditioner stays while the next unknowns are its own (to be reused), and goes,
 // with its hold on the matrix it was built from, as soon as they differ.  Ifpack2's ILUT
 // holds its matrix (the banded LU, the 1-D default, copies it into its band).
@@ -724,6 +721,44 @@ TEST(PreconditionerReuse, ReleasedWhenTheUnknownsChange) {
   EXPECT_EQ(reuse.counts().reuses, 0);
 }
 
+// A preconditioner kept from one Newton solve serves the next one's first linear solve (is
+// carried into the next step) until a carry's first solve goes past the rebuild limit; from
+// then on every Newton solve starts with a new one, while reuse within a solve goes on, until
+// the preconditioner is forgotten (a checkpoint).
+TEST(PreconditionerReuse, CarriesStopAfterOneThatDidNotPay) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  auto A = laplacian(comm, 200);
+  Teuchos::ParameterList ilut;
+  ilut.set("Preconditioner Type", "Ifpack2");
+  auto lows = createLinearSolveStrategy(
+      mergedLinearSolverParameters(ilut, OperatorKind::small, 1, comm->getSize()), comm, "test");
+  ReusingPreconditionerFactory reuse(lows->getPreconditionerFactory(), false, ReuseRules{});
+  auto prec = reuse.createPrec();
+  // One linear solve that took `iterations`; `first`: the first of a Newton solve.
+  const auto solve = [&](bool first, int iterations) {
+    if (first)
+      reuse.startSolve();
+    reuse.initializePrec(Thyra::defaultLinearOpSource(thyraOperator(A)), prec.get(),
+                         Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+    reuse.recordSolve(iterations, true);
+    return std::pair{reuse.counts().builds, reuse.counts().reuses};
+  };
+  // The limit is 2 x 10 iterations.
+  EXPECT_EQ(solve(true, 10), std::pair(1, 0));
+  EXPECT_EQ(solve(true, 20), std::pair(1, 1));   // carried, within the limit
+  EXPECT_EQ(solve(true, 21), std::pair(1, 2));   // carried, past it: carries stop
+  EXPECT_EQ(solve(true, 10), std::pair(2, 2));   // rebuilt (the last solve went past)
+  EXPECT_EQ(solve(false, 12), std::pair(2, 3));  // reused within the Newton solve
+  EXPECT_EQ(solve(true, 10), std::pair(3, 3));   // not carried, though within the limit
+  EXPECT_EQ(solve(true, 10), std::pair(4, 3));
+  reuse.forget();  // as a restarted run: carries again
+  EXPECT_EQ(solve(true, 10), std::pair(5, 3));
+  EXPECT_EQ(solve(true, 10), std::pair(5, 4));
+}
+
+// The explicit step's elimination against the direct solution: 6 nodal unknowns with a
+// diagonal block and 2 extras coupled to a few of them (as Robin ends are), spread over the
+// ranks: x must solve J x = b to round-off.
 // The column map lists each rank's own columns first (as the grid system's does: the
 // diagonal is read in place) or in reverse (Tpetra's diagonal copy).  On 3 ranks the last
 // one holds the extras only, none of the nodal rows they couple to.
