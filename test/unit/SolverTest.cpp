@@ -693,32 +693,38 @@ TEST(LinearSolver, CgWithMueLu) {
 namespace impm {
 namespace {
 
+// A reuse factory over Ifpack2's ILUT with the default rules.
+Teuchos::RCP<ReusingPreconditionerFactory> ilutReuse(const Teuchos::RCP<const Comm>& comm) {
+  Teuchos::ParameterList ilut;
+  ilut.set("Preconditioner Type", "Ifpack2");
+  auto lows = createLinearSolveStrategy(
+      mergedLinearSolverParameters(ilut, OperatorKind::small, 1, comm->getSize()), comm, "test");
+  return Teuchos::rcp(
+      new ReusingPreconditionerFactory(lows->getPreconditionerFactory(), false, ReuseRules{}));
+}
+
 // A kept preconditioner stays while the next unknowns are its own (to be reused), and goes,
 // with its hold on the matrix it was built from, as soon as they differ.  Ifpack2's ILUT
 // holds its matrix (the banded LU, the 1-D default, copies it into its band).
 TEST(PreconditionerReuse, ReleasedWhenTheUnknownsChange) {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   auto A = laplacian(comm, 200);
-  Teuchos::ParameterList ilut;
-  ilut.set("Preconditioner Type", "Ifpack2");
-  auto lows = createLinearSolveStrategy(
-      mergedLinearSolverParameters(ilut, OperatorKind::small, 1, comm->getSize()), comm, "test");
-  ReusingPreconditionerFactory reuse(lows->getPreconditionerFactory(), false, ReuseRules{});
-  auto prec = reuse.createPrec();
-  reuse.initializePrec(Thyra::defaultLinearOpSource(thyraOperator(A)), prec.get(),
-                       Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  const auto reuse = ilutReuse(comm);
+  auto prec = reuse->createPrec();
+  reuse->initializePrec(Thyra::defaultLinearOpSource(thyraOperator(A)), prec.get(),
+                        Thyra::SUPPORT_SOLVE_UNSPECIFIED);
   ASSERT_FALSE(prec->getUnspecifiedPrecOp().is_null());
   EXPECT_GT(A.strong_count(), 1);
-  reuse.releaseUnlessFor(*A->getRowMap(), prec.get());
+  reuse->releaseUnlessFor(*A->getRowMap(), prec.get());
   EXPECT_FALSE(prec->getUnspecifiedPrecOp().is_null());
-  reuse.releaseUnlessFor(Map(201, 0, comm), prec.get());
+  reuse->releaseUnlessFor(Map(201, 0, comm), prec.get());
   EXPECT_TRUE(prec->getUnspecifiedPrecOp().is_null());
   EXPECT_EQ(A.strong_count(), 1);
   // The next request builds a new one, also for the old unknowns.
-  reuse.initializePrec(Thyra::defaultLinearOpSource(thyraOperator(A)), prec.get(),
-                       Thyra::SUPPORT_SOLVE_UNSPECIFIED);
-  EXPECT_EQ(reuse.counts().builds, 2);
-  EXPECT_EQ(reuse.counts().reuses, 0);
+  reuse->initializePrec(Thyra::defaultLinearOpSource(thyraOperator(A)), prec.get(),
+                        Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  EXPECT_EQ(reuse->counts().builds, 2);
+  EXPECT_EQ(reuse->counts().reuses, 0);
 }
 
 // A preconditioner kept from one Newton solve serves the next one's first linear solve (is
@@ -728,20 +734,16 @@ TEST(PreconditionerReuse, ReleasedWhenTheUnknownsChange) {
 TEST(PreconditionerReuse, CarriesStopAfterOneThatDidNotPay) {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   auto A = laplacian(comm, 200);
-  Teuchos::ParameterList ilut;
-  ilut.set("Preconditioner Type", "Ifpack2");
-  auto lows = createLinearSolveStrategy(
-      mergedLinearSolverParameters(ilut, OperatorKind::small, 1, comm->getSize()), comm, "test");
-  ReusingPreconditionerFactory reuse(lows->getPreconditionerFactory(), false, ReuseRules{});
-  auto prec = reuse.createPrec();
+  const auto reuse = ilutReuse(comm);
+  auto prec = reuse->createPrec();
   // One linear solve that took `iterations`; `first`: the first of a Newton solve.
   const auto solve = [&](bool first, int iterations) {
     if (first)
-      reuse.startSolve();
-    reuse.initializePrec(Thyra::defaultLinearOpSource(thyraOperator(A)), prec.get(),
-                         Thyra::SUPPORT_SOLVE_UNSPECIFIED);
-    reuse.recordSolve(iterations, true);
-    return std::pair{reuse.counts().builds, reuse.counts().reuses};
+      reuse->startSolve();
+    reuse->initializePrec(Thyra::defaultLinearOpSource(thyraOperator(A)), prec.get(),
+                          Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+    reuse->recordSolve(iterations, true);
+    return std::pair{reuse->counts().builds, reuse->counts().reuses};
   };
   // The limit is 2 x 10 iterations.
   EXPECT_EQ(solve(true, 10), std::pair(1, 0));
@@ -751,7 +753,7 @@ TEST(PreconditionerReuse, CarriesStopAfterOneThatDidNotPay) {
   EXPECT_EQ(solve(false, 12), std::pair(2, 3));  // reused within the Newton solve
   EXPECT_EQ(solve(true, 10), std::pair(3, 3));   // not carried, though within the limit
   EXPECT_EQ(solve(true, 10), std::pair(4, 3));
-  reuse.forget();  // as a restarted run: carries again
+  reuse->forget();  // as a restarted run: carries again
   EXPECT_EQ(solve(true, 10), std::pair(5, 3));
   EXPECT_EQ(solve(true, 10), std::pair(5, 4));
 }
