@@ -107,6 +107,9 @@ void ReusingPreconditionerFactory::initializePrec(
     if (muelu_ && nullSpace_)
       inner_->getNonconstParameterList()->set("Nullspace", nullSpace_());
   }
+  // A build that throws leaves `prec` half made (MueLu's levels lose data it refreshes
+  // from): the next request, a cut-back step's, then starts over instead of refreshing it.
+  map_ = Teuchos::null;
   {
     IMPM_TIMER("preconditioner");
     inner_->initializePrec(fwdOpSrc, prec, supportSolveUse);

@@ -693,14 +693,20 @@ TEST(LinearSolver, CgWithMueLu) {
 namespace impm {
 namespace {
 
-// A reuse factory over Ifpack2's ILUT with the default rules.
-Teuchos::RCP<ReusingPreconditionerFactory> ilutReuse(const Teuchos::RCP<const Comm>& comm) {
+// Ifpack2's ILUT factory (the small systems' default preconditioner).
+Teuchos::RCP<Thyra::PreconditionerFactoryBase<double>> ilutFactory(
+    const Teuchos::RCP<const Comm>& comm) {
   Teuchos::ParameterList ilut;
   ilut.set("Preconditioner Type", "Ifpack2");
-  auto lows = createLinearSolveStrategy(
-      mergedLinearSolverParameters(ilut, OperatorKind::small, 1, comm->getSize()), comm, "test");
-  return Teuchos::rcp(
-      new ReusingPreconditionerFactory(lows->getPreconditionerFactory(), false, ReuseRules{}));
+  return createLinearSolveStrategy(
+             mergedLinearSolverParameters(ilut, OperatorKind::small, 1, comm->getSize()), comm,
+             "test")
+      ->getPreconditionerFactory();
+}
+
+// A reuse factory over it with the default rules.
+Teuchos::RCP<ReusingPreconditionerFactory> ilutReuse(const Teuchos::RCP<const Comm>& comm) {
+  return Teuchos::rcp(new ReusingPreconditionerFactory(ilutFactory(comm), false, ReuseRules{}));
 }
 
 // A kept preconditioner stays while the next unknowns are its own (to be reused), and goes,
@@ -756,6 +762,74 @@ TEST(PreconditionerReuse, CarriesStopAfterOneThatDidNotPay) {
   reuse->forget();  // as a restarted run: carries again
   EXPECT_EQ(solve(true, 10), std::pair(5, 3));
   EXPECT_EQ(solve(true, 10), std::pair(5, 4));
+}
+
+// Ifpack2's factory, made to throw in the build after `throwNext` is set; it records
+// whether the preconditioner it was handed held an operator (was being refreshed).
+class ThrowingFactory : public Thyra::PreconditionerFactoryBase<double> {
+ public:
+  explicit ThrowingFactory(Teuchos::RCP<Thyra::PreconditionerFactoryBase<double>> inner)
+      : inner_(std::move(inner)) {}
+  bool throwNext = false;
+  mutable bool handedBuilt = false;
+
+  bool isCompatible(const Thyra::LinearOpSourceBase<double>& src) const override {
+    return inner_->isCompatible(src);
+  }
+  Teuchos::RCP<Thyra::PreconditionerBase<double>> createPrec() const override {
+    return inner_->createPrec();
+  }
+  void initializePrec(const Teuchos::RCP<const Thyra::LinearOpSourceBase<double>>& src,
+                      Thyra::PreconditionerBase<double>* prec,
+                      Thyra::ESupportSolveUse use) const override {
+    handedBuilt = !prec->getUnspecifiedPrecOp().is_null();
+    if (throwNext)
+      throw std::runtime_error("build failed");
+    inner_->initializePrec(src, prec, use);
+  }
+  void uninitializePrec(Thyra::PreconditionerBase<double>* prec,
+                        Teuchos::RCP<const Thyra::LinearOpSourceBase<double>>* src,
+                        Thyra::ESupportSolveUse* use) const override {
+    inner_->uninitializePrec(prec, src, use);
+  }
+  void setParameterList(const Teuchos::RCP<Teuchos::ParameterList>& list) override {
+    inner_->setParameterList(list);
+  }
+  Teuchos::RCP<Teuchos::ParameterList> getNonconstParameterList() override {
+    return inner_->getNonconstParameterList();
+  }
+  Teuchos::RCP<Teuchos::ParameterList> unsetParameterList() override {
+    return inner_->unsetParameterList();
+  }
+
+ private:
+  Teuchos::RCP<Thyra::PreconditionerFactoryBase<double>> inner_;
+};
+
+// A build that threw is not refreshed by the next request (a cut-back step's): MueLu's
+// levels are then missing data, and every retry threw again ("Level::Clear found Internal
+// data inconsistency") until the step could not be cut further.  The next build starts over.
+TEST(PreconditionerReuse, ABuildThatThrewStartsOver) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  auto A = laplacian(comm, 200);
+  const auto throwing = Teuchos::rcp(new ThrowingFactory(ilutFactory(comm)));
+  ReusingPreconditionerFactory reuse(throwing, false, ReuseRules{});
+  auto prec = reuse.createPrec();
+  const auto build = [&] {
+    reuse.initializePrec(Thyra::defaultLinearOpSource(thyraOperator(A)), prec.get(),
+                         Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  };
+  build();
+  reuse.recordSolve(100, false);  // a failed solve: the next request rebuilds
+  build();
+  EXPECT_TRUE(throwing->handedBuilt);  // refreshed in place, as it should be
+  reuse.recordSolve(100, false);
+  throwing->throwNext = true;
+  EXPECT_THROW(build(), std::runtime_error);
+  throwing->throwNext = false;
+  build();
+  EXPECT_FALSE(throwing->handedBuilt);
+  EXPECT_EQ(reuse.counts().builds, 3);
 }
 
 // The explicit step's elimination against the direct solution: 6 nodal unknowns with a
