@@ -171,8 +171,10 @@ Teuchos::ParameterList NewtonSolver::validParameters() {
   declareChoice(valid, "Preconditioner Reuse", "auto", {"auto", "on", "off"},
                 "Keep the preconditioner across Newton iterations and steps while the unknowns "
                 "stay the same and the Krylov iterations do not grow past Rebuild Factor times "
-                "those right after it was built (off: a new one for every linear solve; auto: "
-                "on with the multigrid default of 2-D stiffness-dominated steps)");
+                "those right after it was built; once a step's first solve on the last step's "
+                "preconditioner grows past that, later steps start with a new one until the next "
+                "checkpoint (off: a new one for every linear solve; auto: on with the multigrid "
+                "default of 2-D stiffness-dominated steps)");
   declareDouble(valid, "Rebuild Factor", 2.0,
                 "With Preconditioner Reuse: rebuild when a linear solve takes more than this "
                 "times the iterations of the first solve after the last build (at least 5)",
