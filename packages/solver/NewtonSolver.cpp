@@ -5,6 +5,7 @@
 #include <NOX_Thyra.H>
 #include <NOX_Thyra_Vector.H>
 #include <NOX_Observer.hpp>
+#include <NOX_Observer_Vector.hpp>
 #include <NOX_SolverStats.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 
@@ -21,6 +22,7 @@
 
 #include "core/Parameters.hpp"
 #include "solver/LinearSolver.hpp"
+#include "solver/LinearTarget.hpp"
 #include "solver/ModelEvaluator.hpp"
 #include "solver/RoundOffTest.hpp"
 
@@ -108,16 +110,18 @@ class LinearSystemSolved : public NOX::StatusTest::Generic {
 // Records ||R|| and the linear iterations of every Newton iteration.
 class IterationRecorder : public NOX::Observer {
  public:
+  // `linearSolve`: the list whose "Tolerance" each linear solve was given.
   IterationRecorder(NewtonReport& report, std::ostream* log, const std::string& indent,
-                    ReusingPreconditionerFactory* reuse)
-      : report_(report), log_(log), indent_(indent), reuse_(reuse) {}
+                    ReusingPreconditionerFactory* reuse, const Teuchos::ParameterList& linearSolve)
+      : report_(report), log_(log), indent_(indent), reuse_(reuse), linearSolve_(linearSolve) {}
 
   void runPostIterate(const NOX::Solver::Generic& solver) override {
     const double norm = solver.getSolutionGroup().getNormF();
     const auto stats = solver.getSolverStatistics();
     const int linear = stats->linearSolve.lastLinearSolve_NumIterations;
     if (reuse_)
-      reuse_->recordSolve(linear, stats->linearSolve.lastLinearSolve_Converged);
+      reuse_->recordSolve(linear, stats->linearSolve.lastLinearSolve_Converged,
+                          linearSolve_.get<double>("Tolerance"));
     const double update = relativeUpdate(solver);
     report_.residualNorms.push_back(norm);
     report_.linearIterations.push_back(linear);
@@ -133,6 +137,7 @@ class IterationRecorder : public NOX::Observer {
   std::ostream* log_;
   std::string indent_;
   ReusingPreconditionerFactory* reuse_;
+  const Teuchos::ParameterList& linearSolve_;
 };
 
 }  // namespace
@@ -166,8 +171,15 @@ Teuchos::ParameterList NewtonSolver::validParameters() {
   declareDouble(valid, "Absolute Tolerance", 0.0, "Also converged when ||R|| <= this (0: not used)",
                 Bounds::nonNegative());
   declareDouble(valid, "Linear Tolerance", 1e-10,
-                "Relative residual tolerance of each linear solve (overrides the Belos list's)",
+                "Relative residual tolerance of each linear solve (overrides the Belos list's); "
+                "see Adaptive Linear Tolerance",
                 Bounds::positive());
+  declareBool(valid, "Adaptive Linear Tolerance", true,
+              "A Newton iteration whose ||R|| is near Newton's target solves its linear system "
+              "only as far as the target needs: to 0.5 target / ||R|| (at most 0.1) when that is "
+              "looser than Linear Tolerance (false: every solve to Linear Tolerance, for results "
+              "that agree to round-off across rank counts or discretisations, or Newton's "
+              "quadratic convergence seen to the end)");
   declareChoice(valid, "Preconditioner Reuse", "auto", {"auto", "on", "off"},
                 "Keep the preconditioner across Newton iterations and steps while the unknowns "
                 "stay the same and the Krylov iterations do not grow past Rebuild Factor times "
@@ -177,7 +189,8 @@ Teuchos::ParameterList NewtonSolver::validParameters() {
                 "default of 2-D stiffness-dominated steps)");
   declareDouble(valid, "Rebuild Factor", 2.0,
                 "With Preconditioner Reuse: rebuild when a linear solve takes more than this "
-                "times the iterations of the first solve after the last build (at least 5)",
+                "times the iterations of the first solve after the last build (at least 5; per "
+                "decade of residual reduction when their tolerances differ)",
                 Bounds::atLeast(1.0));
   declareBool(valid, "Graph Reuse", true,
               "Keep a step's unknowns, graph and importer for the next steps while the "
@@ -204,7 +217,9 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList& params,
       relativeTolerance_(params.get<double>("Relative Tolerance")),
       absoluteTolerance_(params.get<double>("Absolute Tolerance")),
       updateTolerance_(params.get<double>("Update Tolerance")),
+      linearTolerance_(params.get<double>("Linear Tolerance")),
       roundOffFactor_(params.get<double>("Round-off Factor")),
+      adaptiveLinearTolerance_(params.get<bool>("Adaptive Linear Tolerance")),
       maxIterations_(params.get<int>("Maximum Iterations")) {
   // The deck's lists are merged over impm's; a value where impm has a sublist (or the
   // reverse) is the deck's mistake.
@@ -242,7 +257,7 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList& params,
   p.sublist("Direction").set("Method", "Newton");
   auto& newton = p.sublist("Direction").sublist("Newton");
   newton.set("Forcing Term Method", "Constant");
-  newton.sublist("Linear Solver").set("Tolerance", params.get<double>("Linear Tolerance"));
+  newton.sublist("Linear Solver").set("Tolerance", linearTolerance_);
   p.sublist("Printing").set("Output Information", NOX::Utils::Error);
   merged("Solver/NOX", [&] { p.setParameters(params.sublist("NOX")); });
 }
@@ -302,9 +317,19 @@ NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vecto
   tests->addStatusTest(Teuchos::rcp(new MaxIters(maxIterations_)));
 
   auto params = Teuchos::rcp(new Teuchos::ParameterList(noxParams_));
-  params->sublist("Solver Options")
-      .set<Teuchos::RCP<NOX::Observer>>(
-          "Observer", Teuchos::rcp(new IterationRecorder(report, log, indent_, reuse_.get())));
+  auto& linearSolve = params->sublist("Direction").sublist("Newton").sublist("Linear Solver");
+  auto observers = Teuchos::rcp(new NOX::ObserverVector);
+  observers->pushBack(
+      Teuchos::rcp(new IterationRecorder(report, log, indent_, reuse_.get(), linearSolve)));
+  // A linear step is solved by its first iteration (LinearSystemSolved); a forcing term in
+  // the deck's NOX list sets the tolerance itself.
+  const auto& newton = params->sublist("Direction").sublist("Newton");
+  if (adaptiveLinearTolerance_ && !model->isLinear() &&
+      newton.get<std::string>("Forcing Term Method") == "Constant")
+    observers->pushBack(
+        Teuchos::rcp(new LinearTarget(linearSolve, linearTolerance_,
+                                      std::max(relativeTolerance_ * initial, absoluteTolerance_))));
+  params->sublist("Solver Options").set<Teuchos::RCP<NOX::Observer>>("Observer", observers);
   auto solver = NOX::Solver::buildSolver(group, tests, params);
   StatusType status = Unconverged;
   std::string printed;  // what the linear solvers printed (Ifpack2 a zero pivot, say)

@@ -84,7 +84,9 @@ class NewtonSolver {
   Teuchos::RCP<ReusingPreconditionerFactory> reuse_;
   Teuchos::RCP<Thyra::PreconditionerBase<double>> prec_;
   Teuchos::ParameterList noxParams_;
-  double relativeTolerance_, absoluteTolerance_, updateTolerance_, roundOffFactor_;
+  double relativeTolerance_, absoluteTolerance_, updateTolerance_, linearTolerance_,
+      roundOffFactor_;
+  bool adaptiveLinearTolerance_;
   int maxIterations_;
   std::ostream* log_ = nullptr;
   std::string indent_;

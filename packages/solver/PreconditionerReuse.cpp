@@ -1,6 +1,7 @@
 #include "solver/PreconditionerReuse.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <Thyra_DefaultPreconditioner.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
@@ -15,11 +16,24 @@ ReusingPreconditionerFactory::ReusingPreconditionerFactory(
     const ReuseRules& rules)
     : inner_(std::move(inner)), muelu_(muelu), rules_(rules) {}
 
-void ReusingPreconditionerFactory::recordSolve(int iterations, bool converged) {
+namespace {
+
+// The decades a solve's residual must fall, at least one: a Krylov solve's iterations grow
+// with them, so solves to different tolerances compare by iterations per decade.
+double decades(double tolerance) {
+  return std::max(1.0, -std::log10(tolerance));
+}
+
+}  // namespace
+
+void ReusingPreconditionerFactory::recordSolve(int iterations, bool converged, double tolerance) {
   lastIterations_ = iterations;
+  lastDecades_ = decades(tolerance);
   lastConverged_ = converged;
-  if (firstIterations_ < 0)
+  if (firstIterations_ < 0) {
     firstIterations_ = iterations;
+    firstDecades_ = lastDecades_;
+  }
   if (carry_.judging) {
     carry_.judging = false;
     carry_.stopped = worthRebuilding();
@@ -61,7 +75,10 @@ void ReusingPreconditionerFactory::serve(const Teuchos::RCP<Thyra::LinearOpBase<
 bool ReusingPreconditionerFactory::worthRebuilding() const {
   if (!lastConverged_ || firstIterations_ < 0)
     return true;
-  const double limit = rules_.rebuildFactor * std::max(firstIterations_, rules_.minimumIterations);
+  // The first solve's count at the last solve's tolerance (itself when they are the same).
+  const double expected = firstIterations_ * (lastDecades_ / firstDecades_);
+  const double limit =
+      rules_.rebuildFactor * std::max(expected, static_cast<double>(rules_.minimumIterations));
   return lastIterations_ > limit;
 }
 

@@ -9,7 +9,9 @@
 //   - always when the unknowns changed (another row map: particles reached new nodes), or
 //     when the last linear solve failed;
 //   - when the last solve took more than `Rebuild Factor` times the iterations of the
-//     first solve after the last build (at least `Minimum Iterations`);
+//     first solve after the last build (at least `Minimum Iterations`), per decade of
+//     residual reduction when the two solves had different tolerances (a Newton iteration
+//     that needs less than Linear Tolerance stops early: solver/LinearTarget.hpp);
 //   - at the start of a Newton solve (a new step), once a preconditioner carried into a
 //     step went past that limit in its first solve (CarryState below);
 //   - otherwise the preconditioner built from an earlier Jacobian stays: the Krylov solve
@@ -57,8 +59,9 @@ class ReusingPreconditionerFactory : public Thyra::PreconditionerFactoryBase<dou
   // A new Newton solve (a step, or a step's retry) begins: its first request decides
   // whether the kept preconditioner is carried into it.
   void startSolve() { solveStarted_ = true; }
-  // The outcome of the linear solve that used the current preconditioner.
-  void recordSolve(int iterations, bool converged);
+  // The outcome of the linear solve that used the current preconditioner, and the relative
+  // residual tolerance it was asked for.
+  void recordSolve(int iterations, bool converged, double tolerance);
   bool isMueLu() const { return muelu_; }
   ReuseCounts counts() const { return counts_; }
   // The next request builds a new preconditioner from scratch, as a fresh run would (a run
@@ -113,6 +116,8 @@ class ReusingPreconditionerFactory : public Thyra::PreconditionerFactoryBase<dou
   mutable DecoupledRows builtDecoupled_;
   mutable int firstIterations_ = -1;  // of the first solve after the last build
   mutable int lastIterations_ = 0;
+  // -log10 of the two solves' tolerances (at least 1).
+  mutable double firstDecades_ = 1.0, lastDecades_ = 1.0;
   mutable bool lastConverged_ = true;
   mutable ReuseCounts counts_;
   // A preconditioner kept from one Newton solve serves the next one's first linear solve (is

@@ -18,6 +18,7 @@
 #include "solver/BandedLU.hpp"
 #include "solver/DecoupledRows.hpp"
 #include "solver/LinearSolver.hpp"
+#include "solver/LinearTarget.hpp"
 #include "solver/NewtonSolver.hpp"
 #include "solver/PreconditionerReuse.hpp"
 #include "solver/RoundOffTest.hpp"
@@ -248,6 +249,76 @@ Teuchos::RCP<CrsMatrix> laplacian(const Teuchos::RCP<const Comm>& comm, GO n) {
 Teuchos::RCP<const Thyra::LinearOpBase<double>> thyraOperator(const Teuchos::RCP<CrsMatrix>& A) {
   return Thyra::createConstLinearOp<double, LO, GO, Node>(
       Teuchos::rcp_implicit_cast<const Tpetra::Operator<double, LO, GO, Node>>(A));
+}
+
+// R_i(x) = (K x)_i + x_i^3 - 1, K the 1-D Laplacian (2 on the diagonal, -1 beside it) of n
+// unknowns: a Jacobian K + diag(3 x_i^2) that unpreconditioned GMRES solves slowly.
+class StiffCubicModel : public ResidualModel {
+ public:
+  StiffCubicModel(const Teuchos::RCP<const Comm>& comm, GO n) : K_(laplacian(comm, n)) {}
+  Teuchos::RCP<const Map> unknownMap() const override { return K_->getRowMap(); }
+  Teuchos::RCP<CrsMatrix> createJacobian() const override {
+    return Teuchos::rcp(new CrsMatrix(*K_, Teuchos::Copy));
+  }
+  void evaluate(const Vector& x, Vector* f, CrsMatrix* J) override {
+    auto xv = x.getData();
+    if (f) {
+      K_->apply(x, *f);
+      for (decltype(xv.size()) k = 0; k < xv.size(); ++k)
+        f->sumIntoLocalValue(static_cast<LO>(k), xv[k] * xv[k] * xv[k] - 1.0);
+    }
+    if (J) {
+      J->resumeFill();
+      J->setAllToScalar(0.0);
+      const auto& map = *K_->getRowMap();
+      for (decltype(xv.size()) k = 0; k < xv.size(); ++k) {
+        const GO i = map.getGlobalElement(static_cast<LO>(k));
+        std::vector<GO> cols = {i};
+        std::vector<double> vals = {2.0 + 3 * xv[k] * xv[k]};
+        if (i > 0)
+          cols.push_back(i - 1), vals.push_back(-1.0);
+        if (i < static_cast<GO>(map.getGlobalNumElements()) - 1)
+          cols.push_back(i + 1), vals.push_back(-1.0);
+        J->sumIntoGlobalValues(i, Teuchos::ArrayView<const GO>(cols),
+                               Teuchos::ArrayView<const double>(vals));
+      }
+      J->fillComplete();
+    }
+  }
+
+ private:
+  Teuchos::RCP<CrsMatrix> K_;
+};
+
+// A Newton iteration whose residual is near the target solves its linear system only as far
+// as the target needs (solver/LinearTarget.hpp): the last iteration's solve takes fewer
+// Krylov iterations than the first, and the step still meets its tolerance.
+TEST(NewtonSolver, LastLinearSolvesStopAtNewtonsTarget) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  auto model = Teuchos::rcp(new StiffCubicModel(comm, 100));
+  auto params = solverList();
+  params.set("Relative Tolerance", 1e-8);
+  params.sublist("Linear Solver").set("Preconditioner Type", "None");
+  NewtonSolver newton(params, comm);
+  Vector x(model->unknownMap());
+  x.putScalar(0.5);
+  const auto report = newton.solve(model, x);
+  ASSERT_TRUE(report.converged);
+  ASSERT_GE(report.iterations(), 3);
+  EXPECT_LE(report.residualNorms.back(), 1e-8 * report.residualNorms.front());
+  const auto& linear = report.linearIterations;
+  EXPECT_LT(2 * linear.back(), linear.front())
+      << "first " << linear.front() << ", last " << linear.back();
+}
+
+// eta = min(0.1, max(Linear Tolerance, 0.5 tau / ||R_k||)).
+TEST(LinearTarget, NoTighterThanNewtonNeeds) {
+  Teuchos::ParameterList list;
+  LinearTarget target(list, 1e-10, 1e-8);
+  EXPECT_DOUBLE_EQ(target.tolerance(100.0), 1e-10);  // far from the target
+  EXPECT_DOUBLE_EQ(target.tolerance(1e-5), 5e-4);
+  EXPECT_DOUBLE_EQ(target.tolerance(2e-8), 0.1);  // a tenfold reduction at most
+  EXPECT_DOUBLE_EQ(target.tolerance(0.0), 1e-10);
 }
 
 // Solves A x = 1 (A: the Laplacian of 200 unknowns unless given) with the full list.
@@ -748,7 +819,7 @@ TEST(PreconditionerReuse, CarriesStopAfterOneThatDidNotPay) {
       reuse->startSolve();
     reuse->initializePrec(Thyra::defaultLinearOpSource(thyraOperator(A)), prec.get(),
                           Thyra::SUPPORT_SOLVE_UNSPECIFIED);
-    reuse->recordSolve(iterations, true);
+    reuse->recordSolve(iterations, true, 1e-10);
     return std::pair{reuse->counts().builds, reuse->counts().reuses};
   };
   // The limit is 2 x 10 iterations.
@@ -762,6 +833,29 @@ TEST(PreconditionerReuse, CarriesStopAfterOneThatDidNotPay) {
   reuse->forget();  // as a restarted run: carries again
   EXPECT_EQ(solve(true, 10), std::pair(5, 3));
   EXPECT_EQ(solve(true, 10), std::pair(5, 4));
+}
+
+// Solves to other tolerances compare by iterations per decade of residual reduction: a
+// build whose first solve stopped early (a Newton iteration near its target, at 0.1) is
+// not judged stale by the next full solve (to 1e-10) for taking more iterations.
+TEST(PreconditionerReuse, SolvesToOtherTolerancesCompareByDecade) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  auto A = laplacian(comm, 200);
+  const auto reuse = ilutReuse(comm);
+  auto prec = reuse->createPrec();
+  const auto solve = [&](int iterations, double tolerance) {
+    reuse->initializePrec(Thyra::defaultLinearOpSource(thyraOperator(A)), prec.get(),
+                          Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+    reuse->recordSolve(iterations, true, tolerance);
+    return std::pair{reuse->counts().builds, reuse->counts().reuses};
+  };
+  EXPECT_EQ(solve(3, 0.1), std::pair(1, 0));     // 3 per decade: 30 expected at 1e-10
+  EXPECT_EQ(solve(25, 1e-10), std::pair(1, 1));  // reused
+  EXPECT_EQ(solve(25, 1e-10), std::pair(1, 2));  // within 2 x 30: reused again
+  EXPECT_EQ(solve(61, 1e-10), std::pair(1, 3));  // past 2 x 30
+  EXPECT_EQ(solve(20, 1e-10), std::pair(2, 3));  // so rebuilt
+  EXPECT_EQ(solve(4, 0.1), std::pair(2, 4));     // 2 per decade expected; within the minimum
+  EXPECT_EQ(solve(20, 1e-10), std::pair(2, 5));
 }
 
 // Ifpack2's factory, made to throw in the build after `throwNext` is set; it records
@@ -820,10 +914,10 @@ TEST(PreconditionerReuse, ABuildThatThrewStartsOver) {
                          Thyra::SUPPORT_SOLVE_UNSPECIFIED);
   };
   build();
-  reuse.recordSolve(100, false);  // a failed solve: the next request rebuilds
+  reuse.recordSolve(100, false, 1e-10);  // a failed solve: the next request rebuilds
   build();
   EXPECT_TRUE(throwing->handedBuilt);  // refreshed in place, as it should be
-  reuse.recordSolve(100, false);
+  reuse.recordSolve(100, false, 1e-10);
   throwing->throwNext = true;
   EXPECT_THROW(build(), std::runtime_error);
   throwing->throwNext = false;
