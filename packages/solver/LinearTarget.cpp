@@ -14,6 +14,10 @@ constexpr double kMargin = 0.5;
 constexpr double kLoosest = 0.1;
 }  // namespace
 
+Teuchos::ParameterList& linearSolveList(Teuchos::ParameterList& nox) {
+  return nox.sublist("Direction").sublist("Newton").sublist("Linear Solver");
+}
+
 double LinearTarget::tolerance(double residual) const {
   if (!(residual > 0))
     return linearTolerance_;
@@ -21,7 +25,7 @@ double LinearTarget::tolerance(double residual) const {
 }
 
 void LinearTarget::runPreIterate(const NOX::Solver::Generic& solver) {
-  linearSolve_.set("Tolerance", tolerance(solver.getSolutionGroup().getNormF()));
+  linearSolveList(nox_).set("Tolerance", tolerance(solver.getSolutionGroup().getNormF()));
 }
 
 }  // namespace impm

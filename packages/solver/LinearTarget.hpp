@@ -21,12 +21,17 @@
 
 namespace impm {
 
+// The list NOX's Newton direction hands to each linear solve, within the solver's list
+// `nox`.  Looked up at each use: a sublist lives in its parent's array of entries, and NOX
+// adds entries (defaults) after the solver is built, which may copy it elsewhere.
+Teuchos::ParameterList& linearSolveList(Teuchos::ParameterList& nox);
+
 class LinearTarget : public NOX::Observer {
  public:
-  // `linearSolve`: the list NOX's Newton direction hands to each linear solve (its
-  // "Tolerance" is set before every iteration); `target`: tau, the ||R|| Newton stops at.
-  LinearTarget(Teuchos::ParameterList& linearSolve, double linearTolerance, double target)
-      : linearSolve_(linearSolve), linearTolerance_(linearTolerance), target_(target) {}
+  // `nox`: the solver's list, whose linear solve "Tolerance" is set before every iteration
+  // (it must outlive this observer); `target`: tau, the ||R|| Newton stops at.
+  LinearTarget(Teuchos::ParameterList& nox, double linearTolerance, double target)
+      : nox_(nox), linearTolerance_(linearTolerance), target_(target) {}
 
   void runPreIterate(const NOX::Solver::Generic& solver) override;
 
@@ -34,7 +39,7 @@ class LinearTarget : public NOX::Observer {
   double tolerance(double residual) const;
 
  private:
-  Teuchos::ParameterList& linearSolve_;
+  Teuchos::ParameterList& nox_;
   double linearTolerance_, target_;
 };
 

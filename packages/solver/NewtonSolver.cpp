@@ -110,10 +110,10 @@ class LinearSystemSolved : public NOX::StatusTest::Generic {
 // Records ||R|| and the linear iterations of every Newton iteration.
 class IterationRecorder : public NOX::Observer {
  public:
-  // `linearSolve`: the list whose "Tolerance" each linear solve was given.
+  // `nox`: the solver's list, with the "Tolerance" each linear solve was given.
   IterationRecorder(NewtonReport& report, std::ostream* log, const std::string& indent,
-                    ReusingPreconditionerFactory* reuse, const Teuchos::ParameterList& linearSolve)
-      : report_(report), log_(log), indent_(indent), reuse_(reuse), linearSolve_(linearSolve) {}
+                    ReusingPreconditionerFactory* reuse, Teuchos::ParameterList& nox)
+      : report_(report), log_(log), indent_(indent), reuse_(reuse), nox_(nox) {}
 
   void runPostIterate(const NOX::Solver::Generic& solver) override {
     const double norm = solver.getSolutionGroup().getNormF();
@@ -121,7 +121,7 @@ class IterationRecorder : public NOX::Observer {
     const int linear = stats->linearSolve.lastLinearSolve_NumIterations;
     if (reuse_)
       reuse_->recordSolve(linear, stats->linearSolve.lastLinearSolve_Converged,
-                          linearSolve_.get<double>("Tolerance"));
+                          linearSolveList(nox_).get<double>("Tolerance"));
     const double update = relativeUpdate(solver);
     report_.residualNorms.push_back(norm);
     report_.linearIterations.push_back(linear);
@@ -137,7 +137,7 @@ class IterationRecorder : public NOX::Observer {
   std::ostream* log_;
   std::string indent_;
   ReusingPreconditionerFactory* reuse_;
-  const Teuchos::ParameterList& linearSolve_;
+  Teuchos::ParameterList& nox_;
 };
 
 }  // namespace
@@ -317,18 +317,16 @@ NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vecto
   tests->addStatusTest(Teuchos::rcp(new MaxIters(maxIterations_)));
 
   auto params = Teuchos::rcp(new Teuchos::ParameterList(noxParams_));
-  auto& linearSolve = params->sublist("Direction").sublist("Newton").sublist("Linear Solver");
   auto observers = Teuchos::rcp(new NOX::ObserverVector);
   observers->pushBack(
-      Teuchos::rcp(new IterationRecorder(report, log, indent_, reuse_.get(), linearSolve)));
+      Teuchos::rcp(new IterationRecorder(report, log, indent_, reuse_.get(), *params)));
   // A linear step is solved by its first iteration (LinearSystemSolved); a forcing term in
   // the deck's NOX list sets the tolerance itself.
   const auto& newton = params->sublist("Direction").sublist("Newton");
   if (adaptiveLinearTolerance_ && !model->isLinear() &&
       newton.get<std::string>("Forcing Term Method") == "Constant")
-    observers->pushBack(
-        Teuchos::rcp(new LinearTarget(linearSolve, linearTolerance_,
-                                      std::max(relativeTolerance_ * initial, absoluteTolerance_))));
+    observers->pushBack(Teuchos::rcp(new LinearTarget(
+        *params, linearTolerance_, std::max(relativeTolerance_ * initial, absoluteTolerance_))));
   params->sublist("Solver Options").set<Teuchos::RCP<NOX::Observer>>("Observer", observers);
   auto solver = NOX::Solver::buildSolver(group, tests, params);
   StatusType status = Unconverged;
