@@ -804,24 +804,32 @@ TEST(PreconditionerReuse, ReleasedWhenTheUnknownsChange) {
   EXPECT_EQ(reuse->counts().reuses, 0);
 }
 
+// Drives an ILUT reuse factory through linear solves of given outcomes, on a Laplacian.
+struct ReuseDriver {
+  Teuchos::RCP<const Comm> comm = Teuchos::DefaultComm<int>::getComm();
+  Teuchos::RCP<CrsMatrix> A = laplacian(comm, 200);
+  Teuchos::RCP<ReusingPreconditionerFactory> reuse = ilutReuse(comm);
+  Teuchos::RCP<Thyra::PreconditionerBase<double>> prec = reuse->createPrec();
+
+  // One linear solve that took `iterations` to `tolerance`; `first`: the first of a Newton
+  // solve.  Returns the builds and reuses so far.
+  std::pair<int, int> solve(bool first, int iterations, double tolerance = 1e-10) {
+    if (first)
+      reuse->startSolve();
+    reuse->initializePrec(Thyra::defaultLinearOpSource(thyraOperator(A)), prec.get(),
+                          Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+    reuse->recordSolve(iterations, true, tolerance);
+    return {reuse->counts().builds, reuse->counts().reuses};
+  }
+};
+
 // A preconditioner kept from one Newton solve serves the next one's first linear solve (is
 // carried into the next step) until a carry's first solve goes past the rebuild limit; from
 // then on every Newton solve starts with a new one, while reuse within a solve goes on, until
 // the preconditioner is forgotten (a checkpoint).
 TEST(PreconditionerReuse, CarriesStopAfterOneThatDidNotPay) {
-  auto comm = Teuchos::DefaultComm<int>::getComm();
-  auto A = laplacian(comm, 200);
-  const auto reuse = ilutReuse(comm);
-  auto prec = reuse->createPrec();
-  // One linear solve that took `iterations`; `first`: the first of a Newton solve.
-  const auto solve = [&](bool first, int iterations) {
-    if (first)
-      reuse->startSolve();
-    reuse->initializePrec(Thyra::defaultLinearOpSource(thyraOperator(A)), prec.get(),
-                          Thyra::SUPPORT_SOLVE_UNSPECIFIED);
-    reuse->recordSolve(iterations, true, 1e-10);
-    return std::pair{reuse->counts().builds, reuse->counts().reuses};
-  };
+  ReuseDriver driver;
+  const auto solve = [&](bool first, int iterations) { return driver.solve(first, iterations); };
   // The limit is 2 x 10 iterations.
   EXPECT_EQ(solve(true, 10), std::pair(1, 0));
   EXPECT_EQ(solve(true, 20), std::pair(1, 1));   // carried, within the limit
@@ -830,7 +838,7 @@ TEST(PreconditionerReuse, CarriesStopAfterOneThatDidNotPay) {
   EXPECT_EQ(solve(false, 12), std::pair(2, 3));  // reused within the Newton solve
   EXPECT_EQ(solve(true, 10), std::pair(3, 3));   // not carried, though within the limit
   EXPECT_EQ(solve(true, 10), std::pair(4, 3));
-  reuse->forget();  // as a restarted run: carries again
+  driver.reuse->forget();  // as a restarted run: carries again
   EXPECT_EQ(solve(true, 10), std::pair(5, 3));
   EXPECT_EQ(solve(true, 10), std::pair(5, 4));
 }
@@ -839,15 +847,9 @@ TEST(PreconditionerReuse, CarriesStopAfterOneThatDidNotPay) {
 // build whose first solve stopped early (a Newton iteration near its target, at 0.1) is
 // not judged stale by the next full solve (to 1e-10) for taking more iterations.
 TEST(PreconditionerReuse, SolvesToOtherTolerancesCompareByDecade) {
-  auto comm = Teuchos::DefaultComm<int>::getComm();
-  auto A = laplacian(comm, 200);
-  const auto reuse = ilutReuse(comm);
-  auto prec = reuse->createPrec();
+  ReuseDriver driver;
   const auto solve = [&](int iterations, double tolerance) {
-    reuse->initializePrec(Thyra::defaultLinearOpSource(thyraOperator(A)), prec.get(),
-                          Thyra::SUPPORT_SOLVE_UNSPECIFIED);
-    reuse->recordSolve(iterations, true, tolerance);
-    return std::pair{reuse->counts().builds, reuse->counts().reuses};
+    return driver.solve(false, iterations, tolerance);
   };
   EXPECT_EQ(solve(3, 0.1), std::pair(1, 0));     // 3 per decade: 30 expected at 1e-10
   EXPECT_EQ(solve(25, 1e-10), std::pair(1, 1));  // reused
