@@ -259,7 +259,12 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList& params,
   newton.set("Forcing Term Method", "Constant");
   newton.sublist("Linear Solver").set("Tolerance", linearTolerance_);
   p.sublist("Printing").set("Output Information", NOX::Utils::Error);
-  merged("Solver/NOX", [&] { p.setParameters(params.sublist("NOX")); });
+  // The deck's NOX list may set the linear tolerance itself; it is then the tightest one.
+  merged("Solver/NOX", [&] {
+    p.setParameters(params.sublist("NOX"));
+    linearTolerance_ =
+        p.sublist("Direction").sublist("Newton").sublist("Linear Solver").get<double>("Tolerance");
+  });
 }
 
 NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vector& x) const {
