@@ -267,20 +267,11 @@ class StiffCubicModel : public ResidualModel {
       for (decltype(xv.size()) k = 0; k < xv.size(); ++k)
         f->sumIntoLocalValue(static_cast<LO>(k), xv[k] * xv[k] * xv[k] - 1.0);
     }
-    if (J) {
+    if (J) {  // K's off-diagonal entries (the Jacobian starts as a copy of K), a new diagonal
       J->resumeFill();
-      J->setAllToScalar(0.0);
-      const auto& map = *K_->getRowMap();
       for (decltype(xv.size()) k = 0; k < xv.size(); ++k) {
-        const GO i = map.getGlobalElement(static_cast<LO>(k));
-        std::vector<GO> cols = {i};
-        std::vector<double> vals = {2.0 + 3 * xv[k] * xv[k]};
-        if (i > 0)
-          cols.push_back(i - 1), vals.push_back(-1.0);
-        if (i < static_cast<GO>(map.getGlobalNumElements()) - 1)
-          cols.push_back(i + 1), vals.push_back(-1.0);
-        J->sumIntoGlobalValues(i, Teuchos::ArrayView<const GO>(cols),
-                               Teuchos::ArrayView<const double>(vals));
+        const GO i = K_->getRowMap()->getGlobalElement(static_cast<LO>(k));
+        J->replaceGlobalValues(i, Teuchos::tuple<GO>(i), Teuchos::tuple(2.0 + 3 * xv[k] * xv[k]));
       }
       J->fillComplete();
     }
