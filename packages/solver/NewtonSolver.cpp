@@ -273,12 +273,15 @@ NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vecto
   auto me = Teuchos::rcp(new MpmModelEvaluator(model, lows_));
   auto guess = Thyra::createVector<double, LO, GO, Node>(Teuchos::rcpFromRef(x), me->get_x_space());
   // The reuse factory asks for the near-null space only while this model is being solved;
-  // it must not keep the model alive after this solve, however it ends.
-  struct NullSpaceLease {
+  // it must not keep the model alive after this solve, nor its hierarchy the solve's
+  // Jacobian, however the solve ends.
+  struct SolveLease {
     ReusingPreconditionerFactory* reuse;
-    ~NullSpaceLease() {
-      if (reuse)
+    ~SolveLease() {
+      if (reuse) {
         reuse->setNullSpace(nullptr);
+        reuse->endSolve();
+      }
     }
   } lease{reuse_.get()};
   if (lease.reuse) {

@@ -8,6 +8,7 @@
 
 #include "core/Collective.hpp"
 #include "core/Timers.hpp"
+#include "solver/FinestLevel.hpp"
 
 namespace impm {
 
@@ -108,8 +109,13 @@ void ReusingPreconditionerFactory::initializePrec(
   }
   if (keep) {
     ++counts_.reuses;
-    if (muelu_)  // the only kind kept across retired nodes (Stepper)
+    if (muelu_) {  // the only kind kept across retired nodes (Stepper)
+      {
+        IMPM_TIMER("preconditioner");
+        moveFinestLevelTo(*kept_, Teuchos::rcp_dynamic_cast<const CrsMatrix>(op));
+      }
       serveKept(*op, prec);
+    }
     return;
   }
   // MueLu refreshes the hierarchy it finds in prec: its own, not the wrapped one.  (None
@@ -145,6 +151,17 @@ void ReusingPreconditionerFactory::releaseUnlessFor(const Map& next,
   if (!map_.is_null() && next.isSameAs(*map_))
     return;
   release(prec);
+}
+
+void ReusingPreconditionerFactory::endSolve() noexcept {
+  if (!muelu_ || kept_.is_null())
+    return;
+  try {
+    IMPM_TIMER("preconditioner");
+    releaseFinestLevel(*kept_);
+  } catch (...) {
+    map_ = Teuchos::null;  // the hierarchy may be half changed: the next request starts over
+  }
 }
 
 void ReusingPreconditionerFactory::release(Thyra::PreconditionerBase<double>* prec) const {

@@ -22,6 +22,8 @@
 // prolongator (MueLu's "reuse: type" tP) and recomputes the smoothed prolongator, the coarse
 // operators and the smoothers; new unknowns
 // start the hierarchy over, with the rigid-body modes of the new nodes as near-null space.
+// A kept hierarchy works on the Jacobian it serves at its finest level (the fine residual
+// and smoothers), the coarse levels staying those of its build (solver/FinestLevel.hpp).
 
 #include <functional>
 
@@ -70,6 +72,9 @@ class ReusingPreconditionerFactory : public Thyra::PreconditionerFactoryBase<dou
     map_ = Teuchos::null;
     carry_ = CarryState{};
   }
+  // The Newton solve ended (however): a kept MueLu hierarchy lets the solve's Jacobian go
+  // (its finest level takes the next solve's when carried to it).  Collective.
+  void endSolve() noexcept;
   // Frees `prec` (its hierarchy or factors, and its hold on the last Jacobian) unless it
   // was built for the unknowns `next`: one that cannot serve them would otherwise stay
   // alive while the next system is built.  Collective.

@@ -851,6 +851,47 @@ TEST(PreconditionerReuse, SolvesToOtherTolerancesCompareByDecade) {
   EXPECT_EQ(solve(20, 1e-10), std::pair(2, 5));
 }
 
+// A MueLu hierarchy lets its Jacobian go when its Newton solve ends, before the next one is
+// made (a new matrix: the particles reach other node pairs), is carried to the next one at
+// its finest level (solver/FinestLevel.hpp), and preconditions it.
+TEST(PreconditionerReuse, CarriedHierarchyLetsItsJacobianGo) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  // Enough unknowns for a second level (the coarse level is at most 1000 rows).
+  auto built = laplacian(comm, 4000), next = laplacian(comm, 4000);
+  const auto lows = createLinearSolveStrategy(
+      defaultLinearSolverParameters(OperatorKind::symmetricStiffness, 2, comm->getSize()), comm,
+      "test");
+  const auto reuse = Teuchos::rcp(
+      new ReusingPreconditionerFactory(lows->getPreconditionerFactory(), true, ReuseRules{}));
+  auto prec = reuse->createPrec();
+  reuse->startSolve();
+  reuse->initializePrec(Thyra::defaultLinearOpSource(thyraOperator(built)), prec.get(),
+                        Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  reuse->recordSolve(10, true, 1e-10);
+  EXPECT_GT(built.strong_count(), 1);
+  reuse->endSolve();  // the Jacobian goes before the next one is made
+  EXPECT_FALSE(prec->getUnspecifiedPrecOp().is_null());
+  EXPECT_EQ(built.strong_count(), 1);
+  reuse->startSolve();  // the next step: carried
+  reuse->initializePrec(Thyra::defaultLinearOpSource(thyraOperator(next)), prec.get(),
+                        Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  EXPECT_EQ(reuse->counts().builds, 1);
+  EXPECT_EQ(reuse->counts().reuses, 1);
+  EXPECT_EQ(built.strong_count(), 1);
+
+  auto solver = lows->createOp();
+  Thyra::initializePreconditionedOp<double>(*lows, thyraOperator(next), prec, solver.ptr());
+  const auto map = next->getRowMap();
+  auto b = Teuchos::rcp(new Vector(map)), x = Teuchos::rcp(new Vector(map));
+  b->putScalar(1.0);
+  solver->solve(Thyra::NOTRANS, *Thyra::createConstVector<double, LO, GO, Node>(b),
+                Thyra::createVector<double, LO, GO, Node>(x).ptr());
+  Vector r(map);
+  next->apply(*x, r);
+  r.update(1.0, *b, -1.0);
+  EXPECT_LT(r.norm2(), 1e-8 * b->norm2());
+}
+
 // Ifpack2's factory, made to throw in the build after `throwNext` is set; it records
 // whether the preconditioner it was handed held an operator (was being refreshed).
 class ThrowingFactory : public Thyra::PreconditionerFactoryBase<double> {
