@@ -110,9 +110,12 @@ void ReusingPreconditionerFactory::initializePrec(
   if (keep) {
     ++counts_.reuses;
     if (muelu_) {  // the only kind kept across retired nodes (Stepper)
-      {
+      try {
         IMPM_TIMER("preconditioner");
         moveFinestLevelTo(*kept_, Teuchos::rcp_dynamic_cast<const CrsMatrix>(op));
+      } catch (...) {
+        map_ = Teuchos::null;  // the hierarchy may be half changed: the next request starts over
+        throw;
       }
       serveKept(*op, prec);
     }
