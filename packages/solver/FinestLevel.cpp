@@ -7,6 +7,7 @@
 #include <MueLu_XpetraOperator.hpp>
 #include <Thyra_XpetraLinearOp.hpp>
 
+#include "core/Timers.hpp"
 #include "core/Types.hpp"
 
 namespace impm {
@@ -49,6 +50,7 @@ Teuchos::RCP<XpetraMatrix> finestMatrix(Hierarchy& hierarchy) {
 // hierarchy of one level has its coarse solver there.
 void setFinestLevel(Hierarchy& hierarchy, const XpetraMatrix& old,
                     const Teuchos::RCP<const CrsMatrix>& matrix) {
+  IMPM_TIMER("preconditioner");  // only where there is work: not for a request on the same matrix
   const auto next = MueLu::TpetraCrs_To_XpetraMatrix<double, LO, GO, Node>(
       Teuchos::rcp_const_cast<CrsMatrix>(matrix));
   next->SetFixedBlockSize(old.GetFixedBlockSize());

@@ -111,7 +111,6 @@ void ReusingPreconditionerFactory::initializePrec(
     ++counts_.reuses;
     if (muelu_) {  // the only kind kept across retired nodes (Stepper)
       try {
-        IMPM_TIMER("preconditioner");
         moveFinestLevelTo(*kept_, Teuchos::rcp_dynamic_cast<const CrsMatrix>(op));
       } catch (...) {
         map_ = Teuchos::null;  // the hierarchy may be half changed: the next request starts over
@@ -160,7 +159,6 @@ void ReusingPreconditionerFactory::endSolve() noexcept {
   if (!muelu_ || kept_.is_null())
     return;
   try {
-    IMPM_TIMER("preconditioner");
     releaseFinestLevel(*kept_);
   } catch (...) {
     map_ = Teuchos::null;  // the hierarchy may be half changed: the next request starts over
