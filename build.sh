@@ -22,7 +22,7 @@ demo_deck="input/colliding_disks.xml"
 # Libraries and tools the build and the tests use.
 build_packages=(cmake g++ make ccache trilinos-all-dev libptscotch-dev libscotch-dev
   openmpi-bin libopenmpi-dev libexodusii-dev netcdf-bin googletest libgtest-dev
-  libbenchmark-dev libmuparser-dev libpng-dev libtiff-dev python3)
+  libbenchmark-dev libmuparser-dev libmumps-dev libpng-dev libtiff-dev python3)
 # The tests also open the outputs in ParaView (under a virtual X server) and plot results.
 test_packages=(paraview python3-paraview xvfb xauth python3-numpy python3-matplotlib
   python3-netcdf4 python3-meshio)

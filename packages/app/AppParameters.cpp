@@ -27,6 +27,10 @@ Teuchos::ParameterList discretizationParameters() {
                 "total Lagrangian: integration points stay at their reference positions (FEM; "
                 "the primer's small-deformation bar); updated Lagrangian: particles move "
                 "through the grid (MPM).  auto: total for fem, updated otherwise");
+  declareChoice(valid, "F-bar", "none", {"none", "cell"},
+                "cell: the laws see each particle's F with its determinant replaced by the "
+                "volume-weighted average over the particles of its grid cell (the F-bar method "
+                "against volumetric locking; doc/theory.md); none: the particles' own F");
   return valid;
 }
 

@@ -115,7 +115,11 @@ RunIdentity runIdentity(const Teuchos::ParameterList& deck, const GridGeometry<D
   }
   const auto& discretization = deck.sublist("Discretization");
   id.method = discretization.get<std::string>("Method");
+  // F-bar changes what the particles' F means: part of the kinematics (a run without it
+  // writes the kinematics alone, as checkpoints did before F-bar).
   id.kinematics = discretization.get<std::string>("Kinematics");
+  if (discretization.get<std::string>("F-bar") != "none")
+    id.kinematics += " with F-bar = " + discretization.get<std::string>("F-bar");
   id.timeIntegration = deck.sublist("Time Integration").get<std::string>("Type");
   id.materials = materialList(deck);
   id.bodies = bodyList(deck);

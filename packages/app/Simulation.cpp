@@ -130,6 +130,7 @@ void Simulation<Dim>::setUp(const Teuchos::ParameterList& deck) {
   ownership_ = std::make_unique<NodeOwnership<Dim>>(grid, comm_);
   method_ = parseMethod(deck.sublist("Discretization").get<std::string>("Method"));
   kinematics_ = readKinematics(deck.sublist("Discretization"), method_);
+  fbar_ = parseFBar(deck.sublist("Discretization").get<std::string>("F-bar"));
 
   const auto& materials = deck.sublist("Materials");
   for (auto it = materials.begin(); it != materials.end(); ++it) {
@@ -140,6 +141,7 @@ void Simulation<Dim>::setUp(const Teuchos::ParameterList& deck) {
   bodies_ = std::make_unique<Bodies<Dim>>(deck, materialNames_, grid);
   particles_ = bodies_->createParticles(method_, ownership_->decomposition(), comm_->getRank(),
                                         materials_, kinematics_ == Kinematics::updatedLagrangian);
+  declareFBarFields(particles_, fbar_, kinematics_);
   declareMaterialVariables(particles_, materials_);
   initializeMaterials(particles_, materials_, true);
   addDerivedFields();
@@ -178,6 +180,7 @@ void Simulation<Dim>::restart(const std::string& file) {
   // The particles the deck makes identified the problem; the checkpoint's replace them.
   particles_ = ParticleSet<Dim>();
   bodies_->declareFields(particles_, method_);
+  declareFBarFields(particles_, fbar_, kinematics_);
   declareMaterialVariables(particles_, materials_);
   restored_ = std::make_unique<RunState<Dim>>(readCheckpoint<Dim>(
       file, identity_, ownership_->decomposition(), kinematics_ == Kinematics::totalLagrangian,
@@ -241,7 +244,7 @@ void Simulation<Dim>::writeCheckpoint(CheckpointSeries& series, int step, Steppe
   stepper.forgetCaches();
 }
 
-constexpr GlobalId smallGridNodes = 4000;  // below: the small-system default (ILUT)
+constexpr GlobalId smallGridNodes = 4000;  // below: the small-system default (MUMPS)
 
 // The kind of operator the Newton solves meet, which picks the default linear solver
 // (solver/LinearSolver.hpp).  A Newmark step's operator M / (beta dt^2) + K is
@@ -253,9 +256,8 @@ template <int Dim>
 OperatorKind Simulation<Dim>::operatorKind() const {
   if (Dim == 1)
     return OperatorKind::small;
-  // Below a few thousand nodes ILUT factorises nearly exactly at no cost, and copes with
-  // the nearly singular rows of nodes that barely touch a body, which a direct coarse solve
-  // (all of a small multigrid hierarchy) does not.
+  // Below a few thousand nodes a sparse direct factorisation costs milliseconds, whatever
+  // the operator (stiffness or mass dominated, symmetric or not).
   if (ownership_->grid().numNodes() < smallGridNodes)
     return OperatorKind::small;
   const auto& ti = deck_.sublist("Time Integration");
@@ -268,8 +270,10 @@ OperatorKind Simulation<Dim>::operatorKind() const {
     if (ti.get<double>("Time Step") <= 2.0 * transit)
       return OperatorKind::massDominated;
   }
-  const bool symmetric = std::all_of(materials_.begin(), materials_.end(),
-                                     [](const auto& m) { return m->hasSymmetricTangent(); });
+  // F-bar's tangent is not symmetric, whatever the laws' (assembly/FBar.hpp).
+  const bool symmetric =
+      fbar_ == FBar::none && std::all_of(materials_.begin(), materials_.end(),
+                                         [](const auto& m) { return m->hasSymmetricTangent(); });
   return symmetric ? OperatorKind::symmetricStiffness : OperatorKind::stiffness;
 }
 
@@ -326,12 +330,12 @@ void Simulation<Dim>::printHeader() const {
   const auto& ti = deck_.sublist("Time Integration");
   std::cout << "impm: " << deckFile_ << ": " << Dim << "-D, " << methodName(method_) << ", "
             << (kinematics_ == Kinematics::totalLagrangian ? "total" : "updated") << " Lagrangian, "
-            << ti.get<std::string>("Type") << ", " << totalParticles_ << " integration points, "
-            << grid.cells[0];
+            << (fbar_ == FBar::none ? "" : "F-bar, ") << ti.get<std::string>("Type") << ", "
+            << totalParticles_ << " integration points, " << grid.cells[0];
   for (int d = 1; d < Dim; ++d)
     std::cout << " x " << grid.cells[d];
   std::cout << " cells, " << comm_->getSize() << " rank" << (comm_->getSize() > 1 ? "s" : "")
-            << "\n";
+            << ", " << newton_->linearSolverName() << "\n";
 }
 
 template <int Dim>
@@ -410,6 +414,7 @@ std::unique_ptr<Stepper<Dim>> Simulation<Dim>::makeStepper() {
       *ownership_,
       method_,
       kinematics_,
+      fbar_,
       particles_,
       materials_,
       conditions_,

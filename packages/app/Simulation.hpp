@@ -76,6 +76,7 @@ class Simulation {
   std::unique_ptr<NodeOwnership<Dim>> ownership_;
   Method method_;
   Kinematics kinematics_;
+  FBar fbar_ = FBar::none;
   std::vector<std::string> materialNames_;
   Materials<Dim> materials_;
   std::unique_ptr<Bodies<Dim>> bodies_;

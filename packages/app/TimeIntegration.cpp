@@ -39,6 +39,11 @@ Teuchos::ParameterList timeIntegrationValidParameters() {
                  "'s < 0.5 ? 2*s : 2 - 2*s' loads and unloads)");
   declareDouble(statics, "Minimum Load Increment", 1e-4,
                 "Smallest load increment a failed step may be cut to", Bounds::positive());
+  declareChoice(statics, "Predictor", "extrapolate", {"extrapolate", "zero"},
+                "Where each load step's Newton iterations start.  extrapolate: from the last "
+                "accepted step's displacement increment scaled by the ratio of the load factor "
+                "increments (linear extrapolation, as commercial implicit codes do by default); "
+                "zero: from no displacement beyond the prescribed one");
 
   auto& newmark = valid.sublist("[Type=newmark]");
   declareTransient(newmark);

@@ -43,14 +43,15 @@ void addExternalForce(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Sp
 template <int Dim, class Space>
 void addTangent(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& entryDofs,
                 const ParticleSet<Dim, Space>& particles, const Tangents<Dim, Space>& An,
-                const LocalMatrix& K) {
+                const LocalMatrix& K, const typename ParticleSet<Dim, Space>::Scalars& scale) {
   auto rowPtr = map.rowPtr;
   auto grad = map.grad;
   auto section = particles.section;
   auto volume = particles.volume;
+  const bool scaled = scale.extent(0) > 0;
   Kokkos::parallel_for(
       "impm::tangent", RangePolicy<Space>(0, map.numParticles()), KOKKOS_LAMBDA(const int p) {
-        const double w = section(p) * volume(p);
+        const double w = section(p) * volume(p) * (scaled ? scale(p) : 1.0);
         for (std::size_t ki = rowPtr(p); ki < rowPtr(p + 1); ++ki) {
           // wGA_acd = w sum_b G_ipb A^n_abcd, once per node i instead of once per pair (i, j)
           double wGA[Dim][Dim][Dim];
@@ -75,16 +76,16 @@ void addTangent(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& 
       });
 }
 
-#define IMPM_INSTANTIATE(D)                                                                    \
-  template void addInternalForce<D, DefaultExecSpace>(                                         \
-      const ParticleGridMap<D>&, const EntryDofs<>&, const ParticleSet<D>&,                    \
-      const ParticleSet<D>::Tensors&, const LocalValuesMutable&);                              \
-  template void addExternalForce<D, DefaultExecSpace>(                                         \
-      const ParticleGridMap<D>&, const EntryDofs<>&, const ParticleSet<D>::Vectors&, double,   \
-      const LocalValuesMutable&);                                                              \
-  template void addTangent<D, DefaultExecSpace>(const ParticleGridMap<D>&, const EntryDofs<>&, \
-                                                const ParticleSet<D>&, const Tangents<D>&,     \
-                                                const LocalMatrix&);
+#define IMPM_INSTANTIATE(D)                                                                     \
+  template void addInternalForce<D, DefaultExecSpace>(                                          \
+      const ParticleGridMap<D>&, const EntryDofs<>&, const ParticleSet<D>&,                     \
+      const ParticleSet<D>::Tensors&, const LocalValuesMutable&);                               \
+  template void addExternalForce<D, DefaultExecSpace>(                                          \
+      const ParticleGridMap<D>&, const EntryDofs<>&, const ParticleSet<D>::Vectors&, double,    \
+      const LocalValuesMutable&);                                                               \
+  template void addTangent<D, DefaultExecSpace>(                                                \
+      const ParticleGridMap<D>&, const EntryDofs<>&, const ParticleSet<D>&, const Tangents<D>&, \
+      const LocalMatrix&, const ParticleSet<D>::Scalars&);
 IMPM_INSTANTIATE(1)
 IMPM_INSTANTIATE(2)
 #undef IMPM_INSTANTIATE

@@ -26,9 +26,10 @@ void addExternalForce(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Sp
                       const LocalValuesMutable& f);
 
 // Rows and columns are overlap-map indices (the column map begins with the overlap map).
+// `scale`, when given (not empty), multiplies each particle's term (F-bar's theta_p).
 template <int Dim, class Space = DefaultExecSpace>
 void addTangent(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& entryDofs,
                 const ParticleSet<Dim, Space>& particles, const Tangents<Dim, Space>& An,
-                const LocalMatrix& K);
+                const LocalMatrix& K, const typename ParticleSet<Dim, Space>::Scalars& scale = {});
 
 }  // namespace impm

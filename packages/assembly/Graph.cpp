@@ -10,13 +10,6 @@
 namespace impm {
 namespace {
 
-// Groups of nodes by the overlap index of their first DOF: group k is
-// nodes[start[k] ... start[k + 1]).
-struct NodeGroups {
-  std::vector<std::size_t> start;
-  std::vector<LO> nodes;
-};
-
 // The local columns of every row of the overlap map, from the particle-grid map and the
 // extra couplings.  Node couplings are kept once per node, in one flat array, and expanded
 // into a row's DOF columns when asked for.
@@ -179,11 +172,15 @@ template <int Dim>
 Teuchos::RCP<FECrsGraph> buildGraph(const ParticleGridMap<Dim>& map,
                                     const Kokkos::View<LO*>& entryDofs, const DofMap<Dim>& dofs,
                                     const std::vector<std::pair<GO, GO>>& extraCouplings,
-                                    NodeCoupling coupling, NodeAdjacency* adjacency) {
+                                    NodeCoupling coupling, NodeAdjacency* adjacency,
+                                    const NodeGroups& groups) {
   const auto& overlap = *dofs.overlapMap();
   NodeGroups patches{dofs.haloPatchStart(), {}};
   for (const GlobalId node : dofs.haloPatchNodes())
     patches.nodes.push_back(overlap.getLocalElement(dofs.nodeDof(node, 0)));
+  for (std::size_t k = 1; k < groups.start.size(); ++k)
+    patches.start.push_back(patches.start.back() + groups.start[k] - groups.start[k - 1]);
+  patches.nodes.insert(patches.nodes.end(), groups.nodes.begin(), groups.nodes.end());
   RowColumns<Dim> columns(map, entryDofs, overlap, extraCouplings, coupling, patches);
   Kokkos::DualView<std::size_t*, FECrsGraph::device_type> counts("row counts", columns.numRows());
   // Each row is expanded twice (here for its length, below for its columns) rather than
@@ -225,10 +222,10 @@ bool NodeAdjacency::couples(LO a, LO b) const {
 template Teuchos::RCP<FECrsGraph> buildGraph<1>(const ParticleGridMap<1>&, const Kokkos::View<LO*>&,
                                                 const DofMap<1>&,
                                                 const std::vector<std::pair<GO, GO>>&, NodeCoupling,
-                                                NodeAdjacency*);
+                                                NodeAdjacency*, const NodeGroups&);
 template Teuchos::RCP<FECrsGraph> buildGraph<2>(const ParticleGridMap<2>&, const Kokkos::View<LO*>&,
                                                 const DofMap<2>&,
                                                 const std::vector<std::pair<GO, GO>>&, NodeCoupling,
-                                                NodeAdjacency*);
+                                                NodeAdjacency*, const NodeGroups&);
 
 }  // namespace impm

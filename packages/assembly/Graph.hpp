@@ -36,12 +36,21 @@ struct NodeAdjacency {
   bool couples(LO a, LO b) const;
 };
 
-// `adjacency`: if not null, receives the node pairs (shared coupling only).
+// Groups of nodes by the overlap index of their first DOF: group k is
+// nodes[start[k] ... start[k + 1]).
+struct NodeGroups {
+  std::vector<std::size_t> start{0};
+  std::vector<LO> nodes;
+};
+
+// `adjacency`: if not null, receives the node pairs (shared coupling only).  `groups`: more
+// nodes coupled as a particle's are (F-bar's cells: assembly/FBar.hpp), with shared coupling.
 template <int Dim>
 Teuchos::RCP<FECrsGraph> buildGraph(const ParticleGridMap<Dim>& map,
                                     const Kokkos::View<LO*>& entryDofs, const DofMap<Dim>& dofs,
                                     const std::vector<std::pair<GO, GO>>& extraCouplings,
                                     NodeCoupling coupling = NodeCoupling::shared,
-                                    NodeAdjacency* adjacency = nullptr);
+                                    NodeAdjacency* adjacency = nullptr,
+                                    const NodeGroups& groups = NodeGroups{});
 
 }  // namespace impm

@@ -6,10 +6,12 @@ template <int Dim, class Space>
 void trialDeformationGradient(Kinematics kinematics, const ParticleGridMap<Dim, Space>& map,
                               const EntryDofs<Space>& entryDofs, const LocalValues& du,
                               const typename ParticleSet<Dim, Space>::Tensors& Fn,
-                              const typename ParticleSet<Dim, Space>::Tensors& F) {
+                              const typename ParticleSet<Dim, Space>::Tensors& F,
+                              const typename ParticleSet<Dim, Space>::Tensors& g) {
   auto rowPtr = map.rowPtr;
   auto grad = map.grad;
   const bool total = kinematics == Kinematics::totalLagrangian;
+  const bool relative = g.extent(0) > 0;
   Kokkos::parallel_for(
       "impm::trialF", RangePolicy<Space>(0, map.numParticles()), KOKKOS_LAMBDA(const int p) {
         double H[Dim][Dim] = {};  // grad du
@@ -27,6 +29,8 @@ void trialDeformationGradient(Kinematics kinematics, const ParticleGridMap<Dim, 
                 value += H[a][c] * Fn(p, c, b);
             }
             F(p, a, b) = value;
+            if (relative)
+              g(p, a, b) = total ? value : H[a][b] + (a == b ? 1.0 : 0.0);
           }
       });
 }
@@ -78,7 +82,8 @@ void stressRelativeToStepStart(Kinematics kinematics,
 #define IMPM_INSTANTIATE(D)                                                          \
   template void trialDeformationGradient<D, DefaultExecSpace>(                       \
       Kinematics, const ParticleGridMap<D>&, const EntryDofs<>&, const LocalValues&, \
-      const ParticleSet<D>::Tensors&, const ParticleSet<D>::Tensors&);               \
+      const ParticleSet<D>::Tensors&, const ParticleSet<D>::Tensors&,                \
+      const ParticleSet<D>::Tensors&);                                               \
   template void stressRelativeToStepStart<D, DefaultExecSpace>(                      \
       Kinematics, const ParticleSet<D>::Tensors&, const ParticleSet<D>::Tensors&,    \
       const Tangents<D>&, const ParticleSet<D>::Tensors&, const Tangents<D>&);

@@ -33,11 +33,15 @@ using EntryDofs = Kokkos::View<LO*, typename Space::memory_space>;
 using LocalValues = Kokkos::View<const double**, Kokkos::LayoutLeft, DefaultMemSpace>;
 using LocalValuesMutable = Kokkos::View<double**, Kokkos::LayoutLeft, DefaultMemSpace>;
 
+// F from du; `g`, when given (not empty), receives the deformation gradient relative to the
+// map's configuration, what the map's gradients differentiate: F itself in total, I + grad du
+// in updated Lagrangian (F-bar averages its determinant: assembly/FBar.hpp).
 template <int Dim, class Space = DefaultExecSpace>
 void trialDeformationGradient(Kinematics kinematics, const ParticleGridMap<Dim, Space>& map,
                               const EntryDofs<Space>& entryDofs, const LocalValues& du,
                               const typename ParticleSet<Dim, Space>::Tensors& Fn,
-                              const typename ParticleSet<Dim, Space>::Tensors& F);
+                              const typename ParticleSet<Dim, Space>::Tensors& F,
+                              const typename ParticleSet<Dim, Space>::Tensors& g = {});
 
 // Pn and An, the stress and tangent relative to the step start, from P and A (total
 // Lagrangian: copies).  An may be A itself (the push-forward then overwrites A in place, as

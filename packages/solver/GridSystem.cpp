@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <type_traits>
 
 namespace impm {
 
@@ -40,6 +41,35 @@ ParticleGridMap<Dim> buildMapCollectively(const NodeOwnership<Dim>& ownership, M
   return map;
 }
 
+// F-bar's groups, by the cell of the map's positions; each must be this rank's cell.
+template <int Dim>
+CellGroups<> cellGroupsOf(FBar fbar, const NodeOwnership<Dim>& ownership, Kinematics kinematics,
+                          const ParticleSet<Dim>& particles) {
+  if (fbar == FBar::none)
+    return {};
+  const auto& y = kinematics == Kinematics::totalLagrangian ? particles.X : particles.x;
+  auto groups = groupByCell<Dim>(ownership.grid(), y);
+  const auto& decomposition = ownership.decomposition();
+  const int rank = ownership.comm()->getRank();
+  collectively(*ownership.comm(), [&] {
+    for (const GlobalId cell : groups.cells)
+      if (decomposition.ownerOfCell(cell) != rank)
+        throw std::logic_error("F-bar: a particle of cell " + std::to_string(cell) +
+                               " is on rank " + std::to_string(rank) + ", not on the cell's owner");
+  });
+  return groups;
+}
+
+// The F-bar table of the compatible F as a view of tensors (the same row-major storage).
+template <int Dim>
+typename ParticleSet<Dim>::Tensors compatibleF(const ParticleSet<Dim>& particles) {
+  using Tensors = typename ParticleSet<Dim>::Tensors;
+  static_assert(std::is_same_v<typename Tensors::array_layout, Kokkos::LayoutRight>,
+                "compatibleF: the tensor views must be row-major to alias the field's table");
+  const auto& table = particles.values(kCompatibleFField);
+  return Tensors(table.data(), table.extent(0));
+}
+
 template <class View>
 HostValues constHost(const View& v) {
   return HostValues(v.data(), v.extent(0), v.extent(1));
@@ -52,25 +82,29 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
                             Kinematics kinematics, const ParticleSet<Dim>& particles,
                             const Materials<Dim>& materials, const Contributions& contributions,
                             double time, double loadFactor, StepWorkspace<Dim>* workspace,
-                            LayoutCache<Dim>* layouts, NodeCoupling coupling)
+                            LayoutCache<Dim>* layouts, NodeCoupling coupling, FBar fbar)
     : grid_(ownership.grid()),
       kinematics_(kinematics),
+      fbar_(fbar),
       particles_(particles),
       materials_(materials),
       contributions_(contributions),
       time_(time),
       loadFactor_(loadFactor),
       particleGridMap_(buildMapCollectively(ownership, method, kinematics, particles)),
-      laidOut_(layoutOf(LayoutInputs<Dim>{ownership, particleGridMap_, particles, contributions,
-                                          time, loadFactor, coupling},
-                        layouts ? *layouts : ownLayouts_)),
+      cellGroups_(cellGroupsOf(fbar, ownership, kinematics, particles)),
+      laidOut_(layoutOf(
+          LayoutInputs<Dim>{ownership, particleGridMap_, particles, contributions, time, loadFactor,
+                            coupling, fbar == FBar::none ? nullptr : &cellGroups_},
+          layouts ? *layouts : ownLayouts_)),
       layout_(*laidOut_.layout),
       firstExtra_(layout_.firstExtra),
       dofs_(layout_.dofs),
       entryDofs_(laidOut_.entryDofs),
       graph_(layout_.graph),
       importer_(layout_.importer),
-      work_((workspace ? *workspace : ownWorkspace_).arrays(particles.size(), kinematics)),
+      work_((workspace ? *workspace : ownWorkspace_)
+                .arrays(particles.size(), kinematics, fbar != FBar::none)),
       trial_(particles, materials) {
   loaded_ = carriesForces<Dim>(particles_);
 }
@@ -255,8 +289,17 @@ Teuchos::RCP<const Vector> GridSystem<Dim>::updateStress(const Vector& x) {
   auto xo = toOverlap(x);
   {
     auto du = xo->getLocalViewDevice(Tpetra::Access::ReadOnly);
-    trialDeformationGradient<Dim>(kinematics_, particleGridMap_, entryDofs_, du, particles_.F,
-                                  work_.F);
+    if (fbar_ == FBar::none) {
+      trialDeformationGradient<Dim>(kinematics_, particleGridMap_, entryDofs_, du, particles_.F,
+                                    work_.F);
+    } else {  // F^std from the compatible F, then theta F^std
+      const bool total = kinematics_ == Kinematics::totalLagrangian;
+      trialDeformationGradient<Dim>(kinematics_, particleGridMap_, entryDofs_, du,
+                                    total ? compatibleF(particles_) : particles_.F, work_.F,
+                                    work_.g);
+      averageDilatation<Dim>(cellGroups_, particles_, work_.g, work_.theta, work_.omega);
+      scaleByTheta<Dim>(work_.theta, work_.F);
+    }
   }
   collectively(*dofs_.ownedMap()->getComm(), [&] {
     for (std::size_t m = 0; m < materials_.size(); ++m) {
@@ -340,7 +383,7 @@ void GridSystem<Dim>::requireFinite(const CrsMatrix& J) const {
 template <int Dim>
 typename GridSystem<Dim>::Trial GridSystem<Dim>::trialState(const Vector& x) {
   auto xo = updateStress(x);
-  return {work_.F, work_.P, xo};
+  return {work_.F, work_.P, work_.g, xo};
 }
 
 template <int Dim>
@@ -431,8 +474,13 @@ void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jac
     auto& J = dynamic_cast<FECrsMatrix&>(*jacobian);
     J.beginAssembly();
     J.setAllToScalar(0.0);
-    if (!frozen_)
-      addTangent<Dim>(particleGridMap_, entryDofs_, particles_, work_.An, J.getLocalMatrixDevice());
+    if (!frozen_) {
+      addTangent<Dim>(particleGridMap_, entryDofs_, particles_, work_.An, J.getLocalMatrixDevice(),
+                      work_.theta);
+      if (fbar_ != FBar::none)
+        addFBarTangent<Dim>(particleGridMap_, entryDofs_, particles_, cellGroups_, work_.g,
+                            work_.theta, work_.omega, work_.An, J.getLocalMatrixDevice());
+    }
     if (inertia_.c0 != 0.0 && inertia_.mass == MassType::lumped)
       addDiagonal(inertia_.c0, lumpedMass()->getLocalViewDevice(Tpetra::Access::ReadOnly),
                   J.getLocalMatrixDevice());  // the owned rows, first on the overlap map
@@ -454,7 +502,8 @@ bool GridSystem<Dim>::isLinear() const {
   for (const auto& m : materials_)
     if (!m->isLinear())
       return false;
-  return Dim == 1 || kinematics_ == Kinematics::totalLagrangian;
+  // F-bar's theta is nonlinear in du, except in 1-D, where F-bar's F is jbar itself.
+  return Dim == 1 || (kinematics_ == Kinematics::totalLagrangian && fbar_ == FBar::none);
 }
 
 template <int Dim>

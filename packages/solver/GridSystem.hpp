@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "assembly/FBar.hpp"
 #include "assembly/Kinematics.hpp"
 #include "assembly/Mass.hpp"
 #include "basis/Method.hpp"
@@ -35,11 +36,13 @@ class GridSystem : public ResidualModel {
   // solver/SystemLayout.hpp).  Collective.  `workspace`: the per-particle arrays kept
   // across steps; null `workspace` or `layouts`: the system's own.  `coupling`: the graph's
   // node pairs; NodeCoupling::self serves only a Jacobian with hasDiagonalJacobian().
+  // `fbar`: the anti-locking average of the laws' F (assembly/FBar.hpp); every particle
+  // must then be on the rank that owns the cell of its map position.
   GridSystem(const NodeOwnership<Dim>& ownership, Method method, Kinematics kinematics,
              const ParticleSet<Dim>& particles, const Materials<Dim>& materials,
              const Contributions& contributions, double time, double loadFactor,
              StepWorkspace<Dim>* workspace = nullptr, LayoutCache<Dim>* layouts = nullptr,
-             NodeCoupling coupling = NodeCoupling::shared);
+             NodeCoupling coupling = NodeCoupling::shared, FBar fbar = FBar::none);
 
   // The inertia term M a of a dynamic step, a = c0 du - r on the nodal unknowns.  With the
   // lumped mass, M a is m_i a_i on the owned rows (lumpedMass()): one pass over the grid
@@ -123,9 +126,10 @@ class GridSystem : public ResidualModel {
   // F has moved too).
   void commitMaterials();
   // Evaluates the materials at x (their trial state); returns the trial F and P, views
-  // that stay valid until the next evaluation, and x on the overlap map.
+  // that stay valid until the next evaluation, and x on the overlap map; with F-bar also g,
+  // the compatible deformation gradient relative to the map's configuration.
   struct Trial {
-    typename ParticleSet<Dim>::Tensors F, P;
+    typename ParticleSet<Dim>::Tensors F, P, g;
     Teuchos::RCP<const Vector> xOverlap;
   };
   Trial trialState(const Vector& x);
@@ -195,11 +199,13 @@ class GridSystem : public ResidualModel {
   double explicitC0_ = 0.0;  // the c0 it was made with
   const GridGeometry<Dim> grid_;
   Kinematics kinematics_;
+  FBar fbar_;
   const ParticleSet<Dim>& particles_;
   const Materials<Dim>& materials_;
   const Contributions& contributions_;
   double time_, loadFactor_;
   ParticleGridMap<Dim> particleGridMap_;
+  CellGroups<> cellGroups_;  // F-bar's averaging groups (empty without F-bar)
   LayoutCache<Dim> ownLayouts_{false};
   LaidOut<Dim> laidOut_;
   const SystemLayout<Dim>& layout_;

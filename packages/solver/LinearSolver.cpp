@@ -12,6 +12,7 @@
 #include "core/Errors.hpp"
 #include "solver/BandedLU.hpp"
 #include "solver/Ifpack2Factory.hpp"
+#include "solver/MumpsSolveStrategy.hpp"
 
 namespace impm {
 
@@ -122,9 +123,15 @@ void smoothedAggregation(Teuchos::ParameterList& p, int dim, int ranks) {
   muelu.set("reuse: type", "tP");
 }
 
-}  // namespace
+// MUMPS's sparse direct solve (solver/MumpsSolveStrategy.hpp), LDL^T for symmetric matrices.
+void direct(Teuchos::ParameterList& p, bool symmetric) {
+  p.set("Linear Solver Type", "MUMPS");
+  p.set("Preconditioner Type", "None");
+  p.sublist("Linear Solver Types").sublist("MUMPS").set("Symmetric", symmetric);
+}
 
-Teuchos::ParameterList defaultLinearSolverParameters(OperatorKind kind, int dim, int ranks) {
+// The Krylov method and preconditioner for an operator of that kind.
+Teuchos::ParameterList iterativeLinearSolverParameters(OperatorKind kind, int dim, int ranks) {
   Teuchos::ParameterList p("Linear Solver");
   switch (kind) {
     case OperatorKind::small:
@@ -147,6 +154,19 @@ Teuchos::ParameterList defaultLinearSolverParameters(OperatorKind kind, int dim,
       break;
   }
   return p;
+}
+
+}  // namespace
+
+Teuchos::ParameterList defaultLinearSolverParameters(OperatorKind kind, int dim, int ranks) {
+  // Direct where a factorisation costs little (small 2-D grids) or the Krylov methods
+  // struggle (non-symmetric tangents of plastic flow, nearly singular near a limit load).
+  if (dim > 1 && (kind == OperatorKind::small || kind == OperatorKind::stiffness)) {
+    Teuchos::ParameterList p("Linear Solver");
+    direct(p, false);
+    return p;
+  }
+  return iterativeLinearSolverParameters(kind, dim, ranks);
 }
 
 namespace {
@@ -178,6 +198,18 @@ std::string chosenPreconditioner(const Teuchos::ParameterList& deck) {
 Teuchos::ParameterList mergedLinearSolverParameters(const Teuchos::ParameterList& deck,
                                                     OperatorKind kind, int dim, int ranks) {
   auto p = defaultLinearSolverParameters(kind, dim, ranks);
+  // A deck that names a Krylov solver or a preconditioner where the default solves directly
+  // starts from impm's iterative settings for the problem; one that names MUMPS, from MUMPS.
+  const bool defaultDirect = p.get<std::string>("Linear Solver Type") == "MUMPS";
+  const std::string preconditioner = chosenPreconditioner(deck);
+  const bool wantsDirect =
+      deck.isType<std::string>("Linear Solver Type")
+          ? deck.get<std::string>("Linear Solver Type") == "MUMPS"
+          : defaultDirect && (preconditioner.empty() || preconditioner == "None");
+  if (wantsDirect && !defaultDirect)
+    direct(p, kind == OperatorKind::symmetricStiffness);
+  else if (!wantsDirect && defaultDirect)
+    p = iterativeLinearSolverParameters(kind, dim, ranks);
   // A deck that chooses MueLu where the default is another preconditioner (2-D grids under
   // 4000 nodes, mass-dominated steps) starts from impm's multigrid settings for the problem
   // (Dim unknowns per node, the smoother, the coarse solve), not from MueLu's own defaults
@@ -215,7 +247,36 @@ Teuchos::ParameterList mergedLinearSolverParameters(const Teuchos::ParameterList
   p.setParameters(deck);
   if (const auto chosen = chosenPreconditioner(deck); !chosen.empty())
     p.set("Preconditioner Type", chosen);
+  if (wantsDirect)
+    p.set("Preconditioner Type", "None");  // MUMPS takes none
   return p;
+}
+
+std::string describeLinearSolver(const Teuchos::ParameterList& params) {
+  const auto type = params.get<std::string>("Linear Solver Type");
+  const auto& types = params.sublist("Linear Solver Types");
+  if (type == "MUMPS") {
+    const auto& mumps = types.sublist("MUMPS");
+    const bool symmetric = mumps.isType<bool>("Symmetric") && mumps.get<bool>("Symmetric");
+    return std::string("MUMPS ") + (symmetric ? "LDL^T" : "LU");
+  }
+  std::string method = type;
+  if (type == "Belos" && types.sublist("Belos").isType<std::string>("Solver Type")) {
+    method = types.sublist("Belos").get<std::string>("Solver Type");
+    for (const std::string prefix : {"Pseudo Block ", "Block "})
+      if (method.rfind(prefix, 0) == 0)
+        method = method.substr(prefix.size());
+  }
+  const auto preconditioner = params.get<std::string>("Preconditioner Type");
+  if (preconditioner == "None")
+    return method;
+  std::string name = preconditioner;
+  if (preconditioner == "Ifpack2") {
+    const auto& ifpack2 = params.sublist("Preconditioner Types").sublist("Ifpack2");
+    if (ifpack2.isType<std::string>("Prec Type"))
+      name += " " + ifpack2.get<std::string>("Prec Type");
+  }
+  return method + " + " + name;
 }
 
 Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolveStrategy(
@@ -228,6 +289,10 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolveStrat
   builder.setPreconditioningStrategyFactory(Teuchos::abstractFactoryStd<Base, BandedLUFactory>(),
                                             "Banded LU");
   Stratimikos::enableMueLu<LO, GO, Node>(builder);
+  builder.setLinearSolveStrategyFactory(
+      Teuchos::abstractFactoryStd<Thyra::LinearOpWithSolveFactoryBase<double>,
+                                  MumpsSolveStrategy>(),
+      "MUMPS");
 
   auto list = Teuchos::rcp(new Teuchos::ParameterList(params));
   Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> lows;

@@ -1,23 +1,28 @@
 #pragma once
-// Linear solvers through Stratimikos: Belos Krylov methods preconditioned by Ifpack2 or
-// MueLu (both registered with the builder, which Trilinos 13.2 does not do by itself), or
-// Amesos2 direct solvers on one rank.  The deck's Solver/Linear Solver sublist is a plain
-// Stratimikos list, merged over impm's default for the kind of operator the run solves
-// (doc/performance.md records what was measured to choose them):
-//   - small systems: every 1-D one (with its Robin rows) and 2-D grids of fewer than 4000
-//     nodes: GMRES + ILUT (close to an exact factorisation of a banded matrix, right with
-//     the boundary-force unknowns and with nodes that barely touch a body);
-//   - stiffness-dominated operators in 2-D (static steps, Newmark with time steps beyond
-//     twice the wave transit time of a cell): MueLu smoothed aggregation, Dim unknowns per
-//     node, the rigid-body modes as near-null space, symmetric Gauss-Seidel smoothing, a
-//     direct coarse solve on one rank and an iterative one on several (Amesos2 KLU2 is wrong
-//     there); with CG when every material's tangent is symmetric (hyperelastic laws: the
-//     prescribed unknowns are eliminated symmetrically), GMRES otherwise (plasticity);
+// Linear solvers through Stratimikos: MUMPS's sparse direct solve (solver/MumpsSolveStrategy,
+// on any number of ranks), or Belos Krylov methods preconditioned by Ifpack2 or MueLu (both
+// registered with the builder, which Trilinos 13.2 does not do by itself).  The deck's
+// Solver/Linear Solver sublist is a plain Stratimikos list, merged over impm's default for
+// the kind of operator the run solves (doc/performance.md records what was measured to
+// choose them):
+//   - 1-D systems (with their Robin rows): GMRES + the banded LU (exact on one rank);
+//   - small 2-D grids (fewer than 4000 nodes) and stiffness-dominated operators whose tangent
+//     may be non-symmetric (plasticity): MUMPS's LU.  Near a limit load the plastic tangent
+//     is nearly singular: ILUT-preconditioned GMRES took 30-90 iterations a solve there, and
+//     the strip footing's 10^4 particles ran 1508 s against 14 s;
+//   - stiffness-dominated operators in 2-D whose tangent is symmetric (hyperelastic laws, the
+//     prescribed unknowns eliminated symmetrically: static steps, Newmark with time steps
+//     beyond twice the wave transit time of a cell): CG + MueLu smoothed aggregation, Dim
+//     unknowns per node, the rigid-body modes as near-null space, symmetric Gauss-Seidel
+//     smoothing, a direct coarse solve on one rank and an iterative one on several (Amesos2
+//     KLU2 is wrong there);
 //   - mass-dominated operators (explicit steps, Newmark with short time steps: M/(beta dt^2)
 //     outweighs K): CG + Jacobi, no factorisation.
 
 #include <Teuchos_ParameterList.hpp>
 #include <Thyra_LinearOpWithSolveFactoryBase.hpp>
+
+#include <string>
 
 #include "core/TpetraTypes.hpp"
 
@@ -32,6 +37,10 @@ Teuchos::ParameterList defaultLinearSolverParameters(OperatorKind kind, int dim,
 // ("Preconditioner Types/X") without naming "Preconditioner Type" gets X.
 Teuchos::ParameterList mergedLinearSolverParameters(const Teuchos::ParameterList& deck,
                                                     OperatorKind kind, int dim, int ranks);
+
+// A few words naming the solver a full list (see mergedLinearSolverParameters) chooses, for
+// the run's first line: "MUMPS LU", "GMRES + MueLu", "CG + Ifpack2 RELAXATION".
+std::string describeLinearSolver(const Teuchos::ParameterList& params);
 
 // The Stratimikos strategy for the full list `params` (see mergedLinearSolverParameters). Validates
 // the list by solving a small system with rows on every rank of `comm` (so that Belos, Ifpack2 and

@@ -199,12 +199,12 @@ Teuchos::ParameterList NewtonSolver::validParameters() {
   declareBool(valid, "Print Iterations", true,
               "Print every Newton iteration's residual norm and linear iteration count");
   declareOpaque(valid, "Linear Solver",
-                "A Stratimikos parameter list, merged over impm's default for the problem (1-D and "
-                "2-D grids under 4000 nodes: GMRES + Ifpack2 ILUT; 2-D stiffness-dominated steps: "
-                "GMRES + MueLu smoothed "
-                "aggregation; 2-D mass-dominated steps: CG + Jacobi; see the user guide); "
-                "Ifpack2 and MueLu are registered.  Checked by Stratimikos, Belos, Ifpack2 and "
-                "MueLu at start-up.");
+                "A Stratimikos parameter list, merged over impm's default for the problem (1-D: "
+                "GMRES + the banded LU; 2-D grids under 4000 nodes and 2-D stiffness-dominated "
+                "steps with a non-symmetric tangent (plasticity): the MUMPS direct solver; "
+                "symmetric ones: CG + MueLu smoothed aggregation; 2-D mass-dominated steps: CG + "
+                "Jacobi; see the user guide); MUMPS (Linear Solver Type), Ifpack2 and MueLu are "
+                "registered.  Checked by Stratimikos, Belos, Ifpack2 and MueLu at start-up.");
   declareOpaque(valid, "NOX",
                 "Extra NOX parameters (a NOX::Solver list), merged over the ones impm sets.  "
                 "Checked by NOX.");
@@ -236,6 +236,7 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList& params,
         mergedLinearSolverParameters(params.sublist("Linear Solver"), kind, dim, comm->getSize());
   });
   lows_ = createLinearSolveStrategy(linear, comm, "Solver/Linear Solver");
+  linearSolverName_ = describeLinearSolver(linear);
   // Reuse pays where building costs many Krylov iterations (multigrid); an ILUT of a small
   // system costs less than the iterations a stale one adds, and on the nearly singular
   // systems of nodes that barely touch a body a stale one can stall Newton.  Without reuse

@@ -71,6 +71,9 @@ class NewtonSolver {
     return lows_;
   }
 
+  // The linear solver the Newton iterations use, in a few words (describeLinearSolver).
+  const std::string& linearSolverName() const { return linearSolverName_; }
+
   // Where per-iteration lines go (rank 0 only); null: nowhere.
   void setLog(std::ostream* log, const std::string& indent) {
     log_ = log;
@@ -90,6 +93,7 @@ class NewtonSolver {
   int maxIterations_;
   std::ostream* log_ = nullptr;
   std::string indent_;
+  std::string linearSolverName_;
 };
 
 }  // namespace impm

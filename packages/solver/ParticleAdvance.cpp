@@ -14,6 +14,8 @@ typename GridSystem<Dim>::Trial deform(GridSystem<Dim>& system, const Vector& du
                                        Kinematics kinematics, ParticleSet<Dim>& particles) {
   auto trial = system.trialState(du);
   commitDeformation<Dim>(kinematics, trial.F, trial.P, particles);
+  if (particles.has(kCompatibleFField))  // total-Lagrangian F-bar: the next step's g
+    storeCompatibleF<Dim>(particles, trial.g);
   return trial;
 }
 

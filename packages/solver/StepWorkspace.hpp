@@ -15,15 +15,19 @@ template <int Dim>
 class StepWorkspace {
  public:
   using Tensors = typename ParticleSet<Dim>::Tensors;
+  using Scalars = typename ParticleSet<Dim>::Scalars;
 
   struct Arrays {
     Tensors F, P, Pn;     // trial F, its first Piola stress, P relative to the step start
     Tangents<Dim> A, An;  // the same array
+    // F-bar (assembly/FBar.hpp): g, theta and omega; empty without it.
+    Tensors g;
+    Scalars theta, omega;
   };
 
   // The arrays for n particles (their values are those the last step left).  With total-
   // Lagrangian kinematics P relative to the step start is P itself: Pn shares P's array.
-  Arrays arrays(std::size_t n, Kinematics kinematics);
+  Arrays arrays(std::size_t n, Kinematics kinematics, bool fbar = false);
 
  private:
   Arrays buffers_;
@@ -50,14 +54,20 @@ View firstRows(View& buffer, const std::string& label, std::size_t n) {
 }
 
 template <int Dim>
-typename StepWorkspace<Dim>::Arrays StepWorkspace<Dim>::arrays(std::size_t n,
-                                                               Kinematics kinematics) {
+typename StepWorkspace<Dim>::Arrays StepWorkspace<Dim>::arrays(std::size_t n, Kinematics kinematics,
+                                                               bool fbar) {
   const auto A = firstRows(buffers_.A, "A, then relative to step start", n);
   const auto P = firstRows(buffers_.P, "P", n);
   const auto Pn = kinematics == Kinematics::totalLagrangian
                       ? P
                       : firstRows(buffers_.Pn, "P relative to step start", n);
-  return {firstRows(buffers_.F, "trial F", n), P, Pn, A, A};
+  Arrays out{firstRows(buffers_.F, "trial F", n), P, Pn, A, A, {}, {}, {}};
+  if (fbar) {
+    out.g = firstRows(buffers_.g, "F-bar g", n);
+    out.theta = firstRows(buffers_.theta, "F-bar theta", n);
+    out.omega = firstRows(buffers_.omega, "F-bar omega", n);
+  }
+  return out;
 }
 
 }  // namespace impm

@@ -19,6 +19,7 @@ struct StepperSetup {
   const NodeOwnership<Dim>& ownership;
   Method method;
   Kinematics kinematics;
+  FBar fbar;  // the laws' F averaged over each cell (assembly/FBar.hpp)
   ParticleSet<Dim>& particles;
   const Materials<Dim>& materials;
   const std::vector<std::shared_ptr<Contribution<Dim>>>& contributions;
@@ -55,7 +56,9 @@ struct StepperState {
   int attempts = 0;         // failed attempts of the step under way
   double bodyWork = 0.0;    // work of the body forces so far
   bool started = false;     // dynamic: the initial state (acceleration) is set up
-  // Dynamic runs on a fixed grid: the nodal u, v, a, by global unknown (owned ones).
+  // By global unknown (owned ones; all of them on every rank once restored): dynamic runs
+  // on a fixed grid, the nodal u, v, a; static runs, the predictor's last increment per unit
+  // load factor in nodalU (solver/QuasiStaticStepper.hpp).
   std::vector<GO> nodalDofs;
   std::vector<double> nodalU, nodalV, nodalA;
 };

@@ -55,6 +55,40 @@ LayoutKey<Dim> keyOf(const NodeOwnership<Dim>& ownership, const ParticleGridMap<
   return key;
 }
 
+// F-bar: the nodes of each cell's particles, sorted, into the key (shared coupling: `touched`
+// lists every entry's node).
+template <int Dim>
+void addCellNodes(const CellGroups<>& cells, LayoutKey<Dim>& key) {
+  auto start = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.start);
+  auto order = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.order);
+  key.cellStart.assign(1, 0);
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    const std::size_t first = key.cellNodes.size();
+    for (std::size_t m = start(c); m < start(c + 1); ++m) {
+      const int p = order(m);
+      key.cellNodes.insert(key.cellNodes.end(), key.touched.begin() + key.rowPtr[p],
+                           key.touched.begin() + key.rowPtr[p + 1]);
+    }
+    std::sort(key.cellNodes.begin() + first, key.cellNodes.end());
+    key.cellNodes.erase(std::unique(key.cellNodes.begin() + first, key.cellNodes.end()),
+                        key.cellNodes.end());
+    key.cellStart.push_back(key.cellNodes.size());
+  }
+}
+
+// The key's cell nodes as overlap indices of their first DOFs (invalid: not unknowns).
+template <int Dim>
+NodeGroups cellGroupsOf(const LayoutKey<Dim>& key, const DofMap<Dim>& dofs) {
+  NodeGroups groups;
+  if (key.cellStart.empty())
+    return groups;
+  groups.start = key.cellStart;
+  const auto& overlap = *dofs.overlapMap();
+  for (const GlobalId node : key.cellNodes)
+    groups.nodes.push_back(overlap.getLocalElement(dofs.nodeDof(node, 0)));
+  return groups;
+}
+
 // On the owned rows: non-zero where an entry's node is, zero elsewhere (the marks brought
 // from the overlap rows to their owners).  Collective.
 template <int Dim>
@@ -302,6 +336,8 @@ LaidOut<Dim> layoutOf(const LayoutInputs<Dim>& in, LayoutCache<Dim>& cache) {
   std::vector<int> firstExtra;
   std::vector<ExtraDof> extras;
   auto key = keyOf(in.ownership, in.map, in.contributions, in.coupling, firstExtra, extras);
+  if (in.cells && in.coupling == NodeCoupling::shared)
+    addCellNodes(*in.cells, key);
   auto kept = cache.reusable(key, in.map, comm);
   std::shared_ptr<SystemLayout<Dim>> fresh;
   LaidOut<Dim> out;
@@ -352,7 +388,7 @@ LaidOut<Dim> layoutOf(const LayoutInputs<Dim>& in, LayoutCache<Dim>& cache) {
       graphCouplings.emplace_back(dof, dof);
     }
     fresh->graph = buildGraph(in.map, out.entryDofs, fresh->dofs, graphCouplings, fresh->coupling,
-                              &fresh->adjacency);
+                              &fresh->adjacency, cellGroupsOf(key, fresh->dofs));
   }
   out.layout = fresh;
   cache.keep(std::move(key), out);

@@ -40,6 +40,7 @@
 #include <utility>
 #include <vector>
 
+#include "assembly/FBar.hpp"
 #include "assembly/Graph.hpp"
 #include "assembly/Kinematics.hpp"
 #include "core/DofMap.hpp"
@@ -72,11 +73,15 @@ struct LayoutKey {
   std::vector<std::size_t> rowPtr;   // the map's rows
   std::vector<GlobalId> touched;     // the map's nodes, then the contributions'
   std::vector<GlobalId> extraNodes;  // the anchor node of every extra unknown
+  // F-bar: the nodes of each cell's particles (group k: cellNodes[cellStart[k] ...
+  // cellStart[k + 1]), sorted), which the graph couples; empty without F-bar.
+  std::vector<std::size_t> cellStart;
+  std::vector<GlobalId> cellNodes;
 
   bool operator==(const LayoutKey& o) const {
     return ownership == o.ownership && ownershipRevision == o.ownershipRevision &&
            coupling == o.coupling && rowPtr == o.rowPtr && touched == o.touched &&
-           extraNodes == o.extraNodes;
+           extraNodes == o.extraNodes && cellStart == o.cellStart && cellNodes == o.cellNodes;
   }
 };
 
@@ -178,6 +183,7 @@ struct LayoutInputs {
   const Contributions<Dim>& contributions;
   double time, loadFactor;  // for the contributions' context
   NodeCoupling coupling;
+  const CellGroups<>* cells = nullptr;  // F-bar's groups, whose nodes the graph couples
 };
 
 // The layout of the system on `in.map`: the cache's when nothing it depends on changed,

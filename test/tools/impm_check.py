@@ -544,13 +544,17 @@ def newton(args):
             solves.append(current)
         current.append(float(m.group(2)))
     failures = []
+    # Round-off sets in at a fraction of the forces' scale, the largest first residual of the
+    # run, not of each solve's own: a predictor that starts a load step close to its solution
+    # begins with a residual orders of magnitude below the loads.
+    scale = max((res[0] for res in solves), default=0.0)
     for k, res in enumerate(solves):
         iterations = len(res) - 1
         # The order p of r_(k+1) ~ r_k^p over the last iterations above the round-off floor.
-        floor = args.floor * res[0]
+        floor = args.floor * scale
         useful = [v for v in res if v > floor]
         orders = [math.log(useful[j + 1] / useful[j]) / math.log(useful[j] / useful[j - 1])
-                  for j in range(1, len(useful) - 1)]
+                  for j in range(1, len(useful) - 1) if useful[j] != useful[j - 1]]
         last = orders[-1] if orders else float("nan")
         print("solve %d: %d iterations, |R| %s, last order %.2f"
               % (k + 1, iterations, " ".join("%.2e" % v for v in res), last))

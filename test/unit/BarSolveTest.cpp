@@ -9,6 +9,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <optional>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultComm.hpp>
@@ -283,7 +284,10 @@ namespace {
 // The same check in 2-D for every method, both kinematics and every 2-D law: particles of a
 // square block that was already sheared and stretched (F != I, domains F r0), so that the
 // push-forward of P and A to the start of the step is exercised in updated Lagrangian runs.
-ParticleSet<2> deformedBlock(const NodeOwnership<2>& own, Method method) {
+// `kinematics`: the particles are on the rank of their map position (X in total, x in updated
+// Lagrangian), as F-bar requires; the positions X otherwise.
+ParticleSet<2> deformedBlock(const NodeOwnership<2>& own, Method method,
+                             std::optional<Kinematics> kinematics = std::nullopt) {
   const double F[2][2] = {{1.06, 0.12}, {-0.04, 0.93}};
   const int rank = own.comm()->getRank();
   const int n = 8;  // 8 x 8 particles in [0.3, 0.7]^2 (fem: Gauss points of its cells)
@@ -291,7 +295,11 @@ ParticleSet<2> deformedBlock(const NodeOwnership<2>& own, Method method) {
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const std::array<double, 2> at = {0.3 + (i + 0.5) * 0.4 / n, 0.3 + (j + 0.5) * 0.4 / n};
-      if (own.decomposition().ownerOfPoint(at.data()) == rank)
+      std::array<double, 2> placed = at;
+      if (kinematics == Kinematics::updatedLagrangian)
+        for (int a = 0; a < 2; ++a)
+          placed[a] = 0.5 + F[a][0] * (at[0] - 0.5) + F[a][1] * (at[1] - 0.5);
+      if (own.decomposition().ownerOfPoint(placed.data()) == rank)
         X.push_back(at);
     }
   ParticleSet<2, Kokkos::DefaultHostExecutionSpace> h(X.size());
@@ -318,11 +326,17 @@ ParticleSet<2> deformedBlock(const NodeOwnership<2>& own, Method method) {
   return ps;
 }
 
-// The 2-D law `law` (E = 100, nu = 0.3) on every particle of ps, its variables declared
-// and initialized.
+// The 2-D law `law` (E = 100, nu = 0.3; plastic laws yielding) on every particle of ps, its
+// variables declared and initialized.
 Materials<2> elasticOn(ParticleSet<2>& ps, const std::string& law) {
   Teuchos::ParameterList mat;
   mat.set("Model", law), mat.set("E", 100.0), mat.set("nu", 0.3);
+  // The plastic laws yield at a fraction of the block's stress (about 5): every point is
+  // plastic, away from the elastic-plastic kink.
+  if (law == "j2")
+    mat.set("Yield Stress", 0.5);
+  if (law == "drucker-prager")
+    mat.set("Cohesion", 0.2), mat.set("Friction Angle", 20.0), mat.set("Dilation Angle", 20.0);
   validateParameters(mat, materialValidParameters());
   Materials<2> materials = {createMaterial<2>("m", mat)};
   declareMaterialVariables(ps, materials), initializeMaterials(ps, materials, true);
@@ -347,6 +361,35 @@ TEST(GridSystem, JacobianIsTheDerivativeOfTheResidualIn2D) {
         // Measured: 4e-12 to 7e-12 (linear-elastic), 2e-11 to 6e-11 (neo-hookean); the
         // central difference's truncation and round-off bound it near 1e-10.
         EXPECT_LT(jacobianError(system, 0.003), 1e-9) << what;
+      }
+}
+
+// F-bar's tangent (the theta-scaled standard one and the coupling of each cell's nodes) is the
+// derivative of its residual, for every method, both kinematics and the 2-D laws, with 4 x 4
+// particles per cell (and domains that reach into the next cells with gimp and cpdi).
+TEST(GridSystem, JacobianWithFBarIsTheDerivativeOfTheResidualIn2D) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  NodeOwnership<2> own(makeGridGeometry<2>({0.0, 0.0}, {1.0, 1.0}, {5, 5}), comm);
+  for (const std::string law : {"linear-elastic", "neo-hookean", "hencky", "j2", "drucker-prager"})
+    for (Method method : {Method::fem, Method::mpm, Method::gimp, Method::cpdi})
+      for (Kinematics kinematics : {Kinematics::totalLagrangian, Kinematics::updatedLagrangian}) {
+        if (method == Method::fem && kinematics == Kinematics::updatedLagrangian)
+          continue;
+        auto ps = deformedBlock(own, method, kinematics);
+        declareFBarFields(ps, FBar::cell, kinematics);
+        const auto materials = elasticOn(ps, law);
+        const std::vector<std::shared_ptr<Contribution<2>>> none;
+        GridSystem<2> system(own, method, kinematics, ps, materials, none, 1.0, 1.0, nullptr,
+                             nullptr, NodeCoupling::shared, FBar::cell);
+        const std::string what =
+            law + ", " + methodName(method) +
+            (kinematics == Kinematics::totalLagrangian ? ", total" : ", updated");
+        EXPECT_FALSE(system.isLinear()) << what;
+        // Measured: 8e-12 to 9e-11 (elastic laws), 5e-11 to 1.8e-8 (plastic ones: fem's
+        // undeformed block has points near the yield surface, where the difference quotient
+        // meets the kink); without the coupling term 0.04 to 0.17.
+        const bool plastic = law == "j2" || law == "drucker-prager";
+        EXPECT_LT(jacobianError(system, 0.003), plastic ? 1e-7 : 1e-9) << what;
       }
 }
 

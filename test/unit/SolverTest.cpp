@@ -341,17 +341,26 @@ void expectSolves(const Teuchos::ParameterList& deck) {
 }
 
 // Small systems: GMRES with the banded LU in 1-D (its matrices are banded: exact on one
-// rank), with ILUT on small 2-D grids (whose band would be as wide as the grid).
+// rank), MUMPS's LU on small 2-D grids (whose band would be as wide as the grid); a deck that
+// names a preconditioner there gets GMRES with ILUT beneath its own settings.
 TEST(LinearSolver, SmallSystemDefaults) {
   expectSolves(Teuchos::ParameterList());
   auto comm = Teuchos::DefaultComm<int>::getComm();
   const auto oneD = defaultLinearSolverParameters(OperatorKind::small, 1, comm->getSize());
   const auto twoD = defaultLinearSolverParameters(OperatorKind::small, 2, comm->getSize());
   EXPECT_EQ(oneD.get<std::string>("Preconditioner Type"), "Banded LU");
-  EXPECT_EQ(twoD.get<std::string>("Preconditioner Type"), "Ifpack2");
-  EXPECT_EQ(twoD.sublist("Preconditioner Types").sublist("Ifpack2").get<std::string>("Prec Type"),
-            "ILUT");
+  EXPECT_EQ(twoD.get<std::string>("Linear Solver Type"), "MUMPS");
+  EXPECT_EQ(twoD.get<std::string>("Preconditioner Type"), "None");
   expectSolvesFull(twoD);
+  Teuchos::ParameterList deck;
+  deck.set("Preconditioner Type", std::string("Ifpack2"));
+  const auto iterative =
+      mergedLinearSolverParameters(deck, OperatorKind::small, 2, comm->getSize());
+  EXPECT_EQ(iterative.get<std::string>("Linear Solver Type"), "Belos");
+  EXPECT_EQ(
+      iterative.sublist("Preconditioner Types").sublist("Ifpack2").get<std::string>("Prec Type"),
+      "ILUT");
+  expectSolvesFull(iterative);
 }
 
 // The defaults of the other operator kinds (MueLu with one unknown per node here, CG with
@@ -365,28 +374,34 @@ TEST(LinearSolver, DefaultOfEveryKindSolves) {
   }
 }
 
-// Stiffness: CG where the tangent is symmetric, GMRES where it may not be; MueLu for both.
+// Stiffness: CG + MueLu where the tangent is symmetric, MUMPS's LU where it may not be
+// (plasticity near a limit load); a deck that names a Krylov solver there gets GMRES + MueLu.
 TEST(LinearSolver, CgOnlyForSymmetricStiffness) {
-  const auto method = [](OperatorKind kind) {
-    return defaultLinearSolverParameters(kind, 2, 1)
-        .sublist("Linear Solver Types")
-        .sublist("Belos")
-        .get<std::string>("Solver Type");
-  };
-  EXPECT_EQ(method(OperatorKind::symmetricStiffness), "Pseudo Block CG");
-  EXPECT_EQ(method(OperatorKind::stiffness), "Pseudo Block GMRES");
-  for (auto kind : {OperatorKind::stiffness, OperatorKind::symmetricStiffness})
-    EXPECT_EQ(defaultLinearSolverParameters(kind, 2, 1).get<std::string>("Preconditioner Type"),
-              "MueLu");
+  const auto symmetric = defaultLinearSolverParameters(OperatorKind::symmetricStiffness, 2, 1);
+  EXPECT_EQ(
+      symmetric.sublist("Linear Solver Types").sublist("Belos").get<std::string>("Solver Type"),
+      "Pseudo Block CG");
+  EXPECT_EQ(symmetric.get<std::string>("Preconditioner Type"), "MueLu");
+  const auto general = defaultLinearSolverParameters(OperatorKind::stiffness, 2, 1);
+  EXPECT_EQ(general.get<std::string>("Linear Solver Type"), "MUMPS");
+  EXPECT_FALSE(general.sublist("Linear Solver Types").sublist("MUMPS").get<bool>("Symmetric"));
+  Teuchos::ParameterList deck;
+  deck.set("Linear Solver Type", std::string("Belos"));
+  const auto krylov = mergedLinearSolverParameters(deck, OperatorKind::stiffness, 2, 1);
+  EXPECT_EQ(krylov.sublist("Linear Solver Types").sublist("Belos").get<std::string>("Solver Type"),
+            "Pseudo Block GMRES");
+  EXPECT_EQ(krylov.get<std::string>("Preconditioner Type"), "MueLu");
 }
 
-// A deck list that configures one preconditioner without naming it selects it.
+// A deck list that configures one preconditioner without naming it selects it, beneath the
+// iterative defaults.
 TEST(LinearSolver, ConfiguredPreconditionerIsSelected) {
   Teuchos::ParameterList deck;
   deck.sublist("Preconditioner Types").sublist("Ifpack2").set("Prec Type", std::string("RILUK"));
   const auto p = mergedLinearSolverParameters(deck, OperatorKind::stiffness, 2, 1);
   EXPECT_EQ(p.get<std::string>("Preconditioner Type"), "Ifpack2");
-  EXPECT_EQ(mergedLinearSolverParameters({}, OperatorKind::stiffness, 2, 1)
+  EXPECT_EQ(p.get<std::string>("Linear Solver Type"), "Belos");
+  EXPECT_EQ(mergedLinearSolverParameters({}, OperatorKind::symmetricStiffness, 2, 1)
                 .get<std::string>("Preconditioner Type"),
             "MueLu");
 }
