@@ -20,6 +20,7 @@
 #include "bc/RobinEnd.hpp"
 #include "core/Collective.hpp"
 #include "core/Errors.hpp"
+#include "core/Migration.hpp"
 #include "core/StopRequest.hpp"
 #include "core/Timers.hpp"
 #include "io/InputDeck.hpp"
@@ -142,6 +143,10 @@ void Simulation<Dim>::setUp(const Teuchos::ParameterList& deck) {
   particles_ = bodies_->createParticles(method_, ownership_->decomposition(), comm_->getRank(),
                                         materials_, kinematics_ == Kinematics::updatedLagrangian);
   declareFBarFields(particles_, fbar_, kinematics_);
+  // Bodies are seeded on the owner of X; an updated-Lagrangian map starts from x = X + u0,
+  // and F-bar needs every particle on the owner of that cell (assembly/FBar.hpp).
+  if (fbar_ != FBar::none && kinematics_ == Kinematics::updatedLagrangian && comm_->getSize() > 1)
+    migrateToOwners(particles_, ownership_->decomposition(), *comm_);
   declareMaterialVariables(particles_, materials_);
   initializeMaterials(particles_, materials_, true);
   addDerivedFields();
