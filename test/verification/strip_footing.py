@@ -6,8 +6,10 @@ Runs a footing deck (input/strip_footing.xml, input/strip_footing_dp.xml) at Gri
 history at every load step.  The limit pressure is q at the last step, where the curve has
 reached its plateau: asserted by the rise over the last quarter of the settlement being
 below --plateau of q.  Asserts that the error against --exact decreases under refinement and
-is within --tolerance at the finest grid.  With --plot PNG it also draws the load-settlement
-curves (needs matplotlib; the test itself uses the standard library only).
+is within --tolerance at the finest grid; with --newton-per-step, that every grid's load steps
+take at most that many Newton iterations on average and none is cut back.  With --plot PNG it
+also draws the load-settlement curves (needs matplotlib; the test itself uses the standard
+library only).
 """
 
 import argparse
@@ -54,10 +56,15 @@ def main():
     p.add_argument("--cells", type=int, nargs="+", default=[10, 20, 40])
     p.add_argument("--width", type=float, default=1.0, help="the footing's half-width B")
     p.add_argument("--exact", type=float, required=True, help="Prandtl's limit pressure")
-    p.add_argument("--tolerance", type=float, required=True,
+    p.add_argument("--tolerance", type=float, default=0.0,
                    help="largest relative error of the limit pressure at the finest grid")
     p.add_argument("--plateau", type=float, default=0.01,
                    help="largest relative rise of q over the last quarter of the settlement")
+    p.add_argument("--locks", type=float,
+                   help="assert instead that the error stays above this at every grid (a "
+                        "discretisation that locks), and nothing else")
+    p.add_argument("--newton-per-step", type=float,
+                   help="largest mean Newton iterations per load step; no step may be cut back")
     p.add_argument("--plot", help="write the load-settlement curves to this PNG")
     p.add_argument("--set", action="append", default=[])
     args = p.parse_args()
@@ -77,16 +84,29 @@ def main():
         rise = (q[-1] - q[quarter]) / q[-1]
         error = (q[-1] - args.exact) / args.exact
         errors.append(abs(error))
+        steps = [h for h in history if int(float(h["step"])) > 0]
+        newton = sum(int(h["newton_iterations"]) for h in steps)
+        cut = sum(int(float(h["attempts"])) - 1 for h in steps)
         print("N = %3d: limit pressure %.5g, error %+.2f%% against %.5g; rise over the last "
-              "quarter %.2f%%; %d Newton iterations"
-              % (n, q[-1], 100 * error, args.exact, 100 * rise,
-                 sum(int(h["newton_iterations"]) for h in history)))
+              "quarter %.2f%%; %d Newton iterations in %d load steps (%.2f a step), %d cut-backs"
+              % (n, q[-1], 100 * error, args.exact, 100 * rise, newton, len(steps),
+                 newton / len(steps), cut))
+        if args.newton_per_step and not newton / len(steps) <= args.newton_per_step:
+            failures.append("%.2f Newton iterations per load step at N = %d, above %g"
+                            % (newton / len(steps), n, args.newton_per_step))
+        if args.newton_per_step and cut:
+            failures.append("%d load steps cut back at N = %d" % (cut, n))
+        if args.locks is not None:
+            if not error > args.locks:
+                failures.append("error %+.2f%% at N = %d: expected locking, above %+.2f%%"
+                                % (100 * error, n, 100 * args.locks))
+            continue
         if not abs(rise) < args.plateau:
             failures.append("no plateau at N = %d: q rises by %.2f%% over the last quarter"
                             % (n, 100 * rise))
         if k and not errors[-1] < errors[-2]:
             failures.append("the error does not decrease from N = %d to %d" % (args.cells[k - 1], n))
-    if not errors[-1] <= args.tolerance:
+    if args.locks is None and not errors[-1] <= args.tolerance:
         failures.append("error %.2f%% at N = %d is above %.2f%%"
                         % (100 * errors[-1], args.cells[-1], 100 * args.tolerance))
     if args.plot:
