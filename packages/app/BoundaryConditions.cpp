@@ -94,7 +94,7 @@ std::vector<std::shared_ptr<Contribution<Dim>>> createBoundaryConditions(
         const auto shape = bodies.list()[b].shape;
         result.push_back(std::make_shared<EdgeTraction>(
             name, p, b, [shape](const double* x) { return shape->contains(x); },
-            sideSetBit(p, *shape, path), kinematics));
+            sideSetBit(p, *shape, path), kinematics, initialLoad));
         continue;
       }
       throw InputError(path + "/Type",

@@ -1,6 +1,9 @@
 #include "bc/EdgeTraction.hpp"
 
 #include <cmath>
+#include <string>
+
+#include <Teuchos_CommHelpers.hpp>
 #include <sstream>
 
 #include "basis/CornerWeights.hpp"
@@ -132,12 +135,13 @@ Teuchos::ParameterList EdgeTraction::validParameters() {
 
 EdgeTraction::EdgeTraction(const std::string& name, const Teuchos::ParameterList& params, int body,
                            std::function<bool(const double*)> inside, int sideSet,
-                           Kinematics kinematics)
+                           Kinematics kinematics, double initialLoadFactor)
     : name_(name),
       body_(body),
       inside_(std::move(inside)),
       sideSet_(sideSet),
-      kinematics_(kinematics) {
+      kinematics_(kinematics),
+      committedLoad_(initialLoadFactor) {
   const std::string path = "Boundary Conditions/" + name + "/";
   const auto& region = params.get<Teuchos::Array<double>>("Region");
   for (int k = 0; k < 4; ++k)
@@ -177,8 +181,8 @@ bool EdgeTraction::loaded(const HostParticles::Table& faces, std::size_t p, int 
   return !inside_(beyond);
 }
 
-void EdgeTraction::addResidual(const ContributionContext<2>& ctx, const HostValues& x,
-                               const HostValuesMutable& f) const {
+template <class Fn>
+void EdgeTraction::forEachLoadedFace(const ContributionContext<2>& ctx, Fn&& f) const {
   const auto host = ctx.particles.mirror(Kokkos::DefaultHostExecutionSpace());
   const DomainGeometry domains(host, kinematics_ == Kinematics::totalLagrangian);
   const HostParticles::Table faces =
@@ -196,23 +200,75 @@ void EdgeTraction::addResidual(const ContributionContext<2>& ctx, const HostValu
       const double mid[2] = {0.5 * (a0[0] + b0[0]), 0.5 * (a0[1] + b0[1])};
       if (length0 == 0.0 || !loaded(faces, p, k, mid, n0))  // 0: a triangle's collapsed edge
         continue;
-      // The face now: its ends at the start of the step moved by this iterate's increment.
-      double now[2][2];
-      for (int e = 0; e < 2; ++e) {
-        for (int d = 0; d < 2; ++d)
-          now[e][d] = c.start[ends[e]][d];
-        forEachEndNode(ctx, c.map[ends[e]], host.id(p), name_,
-                       [&](LO lid, int a, double N) { now[e][a] += N * x(lid, 0); });
-      }
-      double n[2], force[2];
-      edgeNormal(now[0], now[1], n);
-      faceForce(mid, n0, n, length0, ctx.time, force);
-      for (int e = 0; e < 2; ++e)
-        forEachEndNode(ctx, c.map[ends[e]], host.id(p), name_, [&](LO lid, int a, double N) {
-          f(lid, 0) -= ctx.loadFactor * force[a] * 0.5 * N;
-        });
+      const double* map[2] = {c.map[ends[0]], c.map[ends[1]]};
+      const double* start[2] = {c.start[ends[0]], c.start[ends[1]]};
+      f(host.id(p), map, start, mid, n0, length0);
     }
   }
+}
+
+namespace {
+
+// The face's ends at the start of the step moved by the increment x (`moved`), and each
+// end's increment (`du`).
+void movedEnds(const ContributionContext<2>& ctx, const HostValues& x, const double* const map[2],
+               const double* const start[2], GlobalId particle, const std::string& name,
+               double moved[2][2], double du[2][2]) {
+  for (int e = 0; e < 2; ++e) {
+    du[e][0] = du[e][1] = 0.0;
+    forEachEndNode(ctx, map[e], particle, name,
+                   [&](LO lid, int a, double N) { du[e][a] += N * x(lid, 0); });
+    for (int d = 0; d < 2; ++d)
+      moved[e][d] = start[e][d] + du[e][d];
+  }
+}
+
+}  // namespace
+
+void EdgeTraction::addResidual(const ContributionContext<2>& ctx, const HostValues& x,
+                               const HostValuesMutable& f) const {
+  ends_.clear();
+  forEachLoadedFace(
+      ctx, [&](GlobalId particle, const double* const map[2], const double* const start[2],
+               const double mid[2], const double n0[2], double length0) {
+        double now[2][2], du[2][2], n[2], nStart[2], force[2], before[2];
+        movedEnds(ctx, x, map, start, particle, name_, now, du);
+        edgeNormal(now[0], now[1], n);
+        edgeNormal(start[0], start[1], nStart);
+        faceForce(mid, n0, n, length0, ctx.time, force);
+        faceForce(mid, n0, nStart, length0, committedTime_, before);
+        for (int e = 0; e < 2; ++e) {
+          LoadedEnd end;
+          for (int a = 0; a < 2; ++a)
+            end.force[a] = 0.25 * (committedLoad_ * before[a] + ctx.loadFactor * force[a]);
+          forEachEndNode(ctx, map[e], particle, name_, [&](LO lid, int a, double N) {
+            f(lid, 0) -= ctx.loadFactor * force[a] * 0.5 * N;
+            end.nodes.push_back({lid, a, N});
+          });
+          ends_.push_back(std::move(end));
+        }
+      });
+}
+
+void EdgeTraction::commit(const ContributionContext<2>& ctx, const HostValues& x) {
+  double work = 0.0;
+  for (const LoadedEnd& end : ends_)
+    for (const auto& [lid, a, N] : end.nodes)
+      work += end.force[a] * N * x(lid, 0);
+  double total = 0.0;
+  Teuchos::reduceAll(*ctx.dofs.ownedMap()->getComm(), Teuchos::REDUCE_SUM, work,
+                     Teuchos::outArg(total));
+  work_ += total;
+  committedTime_ = ctx.time;
+  committedLoad_ = ctx.loadFactor;
+  ends_.clear();
+}
+
+void EdgeTraction::restore(const std::vector<double>& state) {
+  if (state.size() != 3)
+    throw std::invalid_argument("a traction's state has 3 values, not " +
+                                std::to_string(state.size()));
+  committedTime_ = state[0], committedLoad_ = state[1], work_ = state[2];
 }
 
 }  // namespace impm

@@ -22,9 +22,14 @@
 #include <array>
 #include <functional>
 #include <string>
+#include <tuple>
+#include <vector>
 
+#include <tuple>
+#include <vector>
 #include "assembly/Kinematics.hpp"
 #include "core/Formula.hpp"
+
 #include "solver/Contribution.hpp"
 
 namespace impm {
@@ -35,14 +40,29 @@ class EdgeTraction : public Contribution<2> {
 
   // body: index of the body the traction acts on; inside: whether a point lies in the
   // body's reference shape; sideSet: the bit of the side set to load, or -1 (exposed faces).
+  // initialLoadFactor: the load factor before the first step (0 in static runs, 1 otherwise).
   EdgeTraction(const std::string& name, const Teuchos::ParameterList& params, int body,
-               std::function<bool(const double*)> inside, int sideSet, Kinematics kinematics);
+               std::function<bool(const double*)> inside, int sideSet, Kinematics kinematics,
+               double initialLoadFactor);
 
   void addResidual(const ContributionContext<2>& ctx, const HostValues& x,
                    const HostValuesMutable& f) const override;
+  // The step's work: each face end's share of the face force, averaged between the start and
+  // the end of the step (the trapezoidal rule, as the body forces' work), times the end's
+  // displacement increment.  The forces and the ends' nodes are those of the last residual
+  // (Newton's, at the solution): by commit the particles, and so the faces, have moved.
+  // Collective.
+  void commit(const ContributionContext<2>& ctx, const HostValues& x) override;
+  double work() const override { return work_; }
+  std::vector<double> state() const override { return {committedTime_, committedLoad_, work_}; }
+  void restore(const std::vector<double>& state) override;
 
  private:
   using HostParticles = ParticleSet<2, Kokkos::DefaultHostExecutionSpace>;
+  // f(particle id, the face's ends in the map's configuration and at the start of the step,
+  // its reference midpoint, normal and length) for every loaded face on this rank.
+  template <class Fn>
+  void forEachLoadedFace(const ContributionContext<2>& ctx, Fn&& f) const;
   static bool hasBit(double mask, int bit);
   // Whether face k of particle p, with reference midpoint mid and outward normal n0, is loaded.
   // faces: the particles' side-set masks (empty without Side Set).
@@ -61,6 +81,14 @@ class EdgeTraction : public Contribution<2> {
   std::array<Formula, 2> traction_;
   Formula pressure_;
   bool currentFace_ = false;
+  double committedTime_ = 0.0, committedLoad_, work_ = 0.0;  // at the last commit
+  // Each loaded face end of the last residual: its nodes' (overlap index, component, N) and
+  // its share of the step's mean force.
+  struct LoadedEnd {
+    std::vector<std::tuple<LO, int, double>> nodes;
+    double force[2] = {0.0, 0.0};
+  };
+  mutable std::vector<LoadedEnd> ends_;
 };
 
 }  // namespace impm
