@@ -114,6 +114,24 @@ TEST(ParticleGridMap, PartitionOfUnityAndCompleteness2D) {
                                         randomParticles(grid, 200, 1.5, true, 13), 1e-12);
 }
 
+// A GIMP box whose stretch changed sign (F_xx < 0 under large shear) is a named numerical
+// failure, not a map of meaningless weights.
+TEST(ParticleGridMap, InsideOutGimpBoxIsANamedFailure) {
+  const auto grid = unitGrid<2>(4);
+  auto ps = randomParticles<2>(grid, 5, 0.5, false, 7);
+  EXPECT_NO_THROW(buildParticleGridMap(Method::gimp, grid, ps));
+  auto r = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.domain);
+  r(3, 0, 0) = -0.01;
+  Kokkos::deep_copy(ps.domain, r);
+  try {
+    buildParticleGridMap(Method::gimp, grid, ps);
+    FAIL() << "no error";
+  } catch (const NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("particle 3"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("inside out"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ParticleGridMap, GimpIsTheExactTentAverage) {
   // A particle [0.13, 0.41] on a grid of spacing 0.1 straddles nodes 0.2, 0.3 and 0.4.
   const auto grid = unitGrid<1>(10);
