@@ -76,6 +76,44 @@ void addTangent(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& 
       });
 }
 
+template <int Dim, class Space>
+void addStressRoundOffScale(const ParticleGridMap<Dim, Space>& map,
+                            const EntryDofs<Space>& entryDofs,
+                            const ParticleSet<Dim, Space>& particles,
+                            const Tangents<Dim, Space>& An,
+                            const typename ParticleSet<Dim, Space>::Tensors& g,
+                            const LocalValuesMutable& s) {
+  auto rowPtr = map.rowPtr;
+  auto grad = map.grad;
+  auto section = particles.section;
+  auto volume = particles.volume;
+  const bool identity = g.extent(0) == 0;
+  Kokkos::parallel_for(
+      "impm::stressRoundOff", RangePolicy<Space>(0, map.numParticles()),
+      KOKKOS_LAMBDA(const int p) {
+        double AG[Dim][Dim];  // sum_cD |An_aBcD| |g_cD|
+        for (int a = 0; a < Dim; ++a)
+          for (int B = 0; B < Dim; ++B) {
+            double sum = 0.0;
+            for (int c = 0; c < Dim; ++c)
+              for (int D = 0; D < Dim; ++D) {
+                const double gcD = identity ? (c == D ? 1.0 : 0.0) : g(p, c, D);
+                sum +=
+                    Kokkos::Experimental::fabs(An(p, a, B, c, D)) * Kokkos::Experimental::fabs(gcD);
+              }
+            AG[a][B] = sum;
+          }
+        const double w = section(p) * volume(p);
+        for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k)
+          for (int a = 0; a < Dim; ++a) {
+            double sum = 0.0;
+            for (int B = 0; B < Dim; ++B)
+              sum += AG[a][B] * Kokkos::Experimental::fabs(grad(k, B));
+            Kokkos::atomic_add(&s(entryDofs(k) + a, 0), w * sum);
+          }
+      });
+}
+
 #define IMPM_INSTANTIATE(D)                                                                     \
   template void addInternalForce<D, DefaultExecSpace>(                                          \
       const ParticleGridMap<D>&, const EntryDofs<>&, const ParticleSet<D>&,                     \
@@ -85,7 +123,10 @@ void addTangent(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& 
       const LocalValuesMutable&);                                                               \
   template void addTangent<D, DefaultExecSpace>(                                                \
       const ParticleGridMap<D>&, const EntryDofs<>&, const ParticleSet<D>&, const Tangents<D>&, \
-      const LocalMatrix&, const ParticleSet<D>::Scalars&);
+      const LocalMatrix&, const ParticleSet<D>::Scalars&);                                      \
+  template void addStressRoundOffScale<D, DefaultExecSpace>(                                    \
+      const ParticleGridMap<D>&, const EntryDofs<>&, const ParticleSet<D>&, const Tangents<D>&, \
+      const ParticleSet<D>::Tensors&, const LocalValuesMutable&);
 IMPM_INSTANTIATE(1)
 IMPM_INSTANTIATE(2)
 #undef IMPM_INSTANTIATE

@@ -32,4 +32,17 @@ void addTangent(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Space>& 
                 const ParticleSet<Dim, Space>& particles, const Tangents<Dim, Space>& An,
                 const LocalMatrix& K, const typename ParticleSet<Dim, Space>::Scalars& scale = {});
 
+// s_ia += w_p sum_B |G_ipB| sum_cD |An_aBcD| |g_cD|: how far the internal force moves, per
+// unit relative rounding, when the laws see g rounded to doubles (g: the deformation gradient
+// relative to the map's configuration; empty: the identity, the updated-Lagrangian step's to
+// round-off).  The residual's round-off floor from the stress: a stiff law at a small strain
+// (lambda eps for F - I near I) puts it far above eps |K| |du| (solver/RoundOffTest.hpp).
+template <int Dim, class Space = DefaultExecSpace>
+void addStressRoundOffScale(const ParticleGridMap<Dim, Space>& map,
+                            const EntryDofs<Space>& entryDofs,
+                            const ParticleSet<Dim, Space>& particles,
+                            const Tangents<Dim, Space>& An,
+                            const typename ParticleSet<Dim, Space>::Tensors& g,
+                            const LocalValuesMutable& s);
+
 }  // namespace impm

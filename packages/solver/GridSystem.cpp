@@ -496,6 +496,28 @@ void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jac
 }
 
 template <int Dim>
+double GridSystem<Dim>::roundOffScale() const {
+  if (frozen_ || stressX_.is_null())
+    return 0.0;  // no stress of this system's own at an iterate
+  FEMultiVector s(dofs_.ownedMap(), importer_, 1);
+  s.beginAssembly();
+  const bool total = kinematics_ == Kinematics::totalLagrangian;
+  addStressRoundOffScale<Dim>(particleGridMap_, entryDofs_, particles_, work_.An,
+                              total ? work_.F : typename ParticleSet<Dim>::Tensors(),
+                              s.getLocalViewDevice(Tpetra::Access::ReadWrite));
+  s.endAssembly();
+  Vector owned(dofs_.ownedMap());
+  Tpetra::deep_copy(owned, *s.getVector(0));
+  // Prescribed rows hold scale (x - value), not forces.
+  {
+    auto values = owned.getLocalViewHost(Tpetra::Access::ReadWrite);
+    for (const auto& [lid, value] : constrainedRows())
+      values(lid, 0) = 0.0;
+  }
+  return owned.norm2();
+}
+
+template <int Dim>
 bool GridSystem<Dim>::isLinear() const {
   if (frozen_)
     return true;

@@ -103,6 +103,9 @@ class GridSystem : public ResidualModel {
   // The rigid-body modes of the nodal unknowns (solver/RigidBodyModes).
   Teuchos::RCP<MultiVector> nearNullSpace() const override;
   void evaluate(const Vector& x, Vector* residual, CrsMatrix* jacobian) override;
+  // The internal force's rounding when the laws see F rounded to doubles: at a small strain
+  // of a stiff law (lambda eps) it is the residual's floor (assembly/Forces.hpp).
+  double roundOffScale() const override;
 
   // A zero increment with the contributions' guesses for their extra unknowns and the
   // prescribed increments.

@@ -317,7 +317,7 @@ NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vecto
   if (updateTolerance_ > 0)
     converged->addStatusTest(Teuchos::rcp(new RelativeUpdate(updateTolerance_)));
   if (roundOffFactor_ > 0)
-    converged->addStatusTest(Teuchos::rcp(new RoundOffResidual(roundOffFactor_)));
+    converged->addStatusTest(Teuchos::rcp(new RoundOffResidual(roundOffFactor_, *model)));
   if (model->isLinear())
     converged->addStatusTest(Teuchos::rcp(new LinearSystemSolved));
   auto tests = Teuchos::rcp(new Combo(Combo::OR));

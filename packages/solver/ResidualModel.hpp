@@ -20,6 +20,11 @@ class ResidualModel {
   // The near-null space of the Jacobian's stiffness on unknownMap() (rigid-body modes, for
   // multigrid), or null when the model has none to offer.
   virtual Teuchos::RCP<MultiVector> nearNullSpace() const { return Teuchos::null; }
+  // The 2-norm of how far R moves, per unit relative rounding, when its nonlinear terms are
+  // evaluated at inputs rounded to doubles, at the last evaluation (0: nothing beyond the
+  // rounding of x).  Newton's round-off test adds it times eps to eps || |K| |x| ||.
+  // Collective.
+  virtual double roundOffScale() const { return 0.0; }
 };
 
 }  // namespace impm

@@ -65,8 +65,9 @@ NOX::StatusTest::StatusType RoundOffResidual::checkStatus(const NOX::Solver::Gen
     return status_;
   norm_ = group->getNormF();
   floor_ = factor_ * std::numeric_limits<double>::epsilon() *
-           absoluteProductNorm(
-               *K, *Extract::getConstTpetraVector(Teuchos::rcpFromRef(x->getThyraVector())));
+           (absoluteProductNorm(
+                *K, *Extract::getConstTpetraVector(Teuchos::rcpFromRef(x->getThyraVector()))) +
+            model_.roundOffScale());
   if (norm_ <= floor_)
     status_ = NOX::StatusTest::Converged;
   return status_;

@@ -13,18 +13,21 @@
 #include <NOX_StatusTest_Generic.H>
 
 #include "core/TpetraTypes.hpp"
+#include "solver/ResidualModel.hpp"
 
 namespace impm {
 
 // || |K| |x| ||_2, the absolute values taken entry by entry.  Collective.
 double absoluteProductNorm(const CrsMatrix& K, const Vector& x);
 
-// Converged when ||R(x_k)|| <= factor * eps * || |K| |x_k| ||, K the Jacobian of the last
-// Newton iteration (the solver's group holds it as a Tpetra CrsMatrix).  Never on the initial
-// guess; not evaluated when an earlier test of a minimal check has already decided.
+// Converged when ||R(x_k)|| <= factor * eps * (|| |K| |x_k| || + model.roundOffScale()), K the
+// Jacobian of the last Newton iteration (the solver's group holds it as a Tpetra CrsMatrix):
+// the rounding of the unknowns and that of the model's own inputs (the stress of a stiff law
+// at a small strain, where F - I has lost the digits).  Never on the initial guess; not
+// evaluated when an earlier test of a minimal check has already decided.
 class RoundOffResidual : public NOX::StatusTest::Generic {
  public:
-  explicit RoundOffResidual(double factor) : factor_(factor) {}
+  RoundOffResidual(double factor, const ResidualModel& model) : factor_(factor), model_(model) {}
   NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver,
                                           NOX::StatusTest::CheckType type) override;
   NOX::StatusTest::StatusType getStatus() const override { return status_; }
@@ -32,6 +35,7 @@ class RoundOffResidual : public NOX::StatusTest::Generic {
 
  private:
   double factor_, norm_ = 0.0, floor_ = 0.0;
+  const ResidualModel& model_;
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
 };
 

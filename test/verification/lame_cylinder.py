@@ -34,7 +34,8 @@ from annulus_image import write_annulus
 from impmrun import run_deck
 import subprocess
 
-E, NU, P, A, B = 1.0e6, 0.3, 1.0, 1.0, 2.0
+E, P, A, B = 1.0e6, 1.0, 1.0, 2.0
+NU = 0.3  # --nu sets it for the exact solution (the deck's own Poisson ratio)
 
 
 def exact_ur(r):
@@ -83,10 +84,15 @@ def run_levels(args, work):
         subprocess.run([args.mesher, "annulus", exo, "--radii", "1", "2", "--cells",
                         str(8 * 2 ** k), str(19 * 2 ** k), "--block", "cylinder"],
                        check=True, capture_output=True)
-        out = run_deck(args.impm, os.path.join(args.decks, "cylinder_lame_mesh.xml"),
-                       [grid, "Bodies/cylinder/Mesh File=" + exo, "Output/Exodus=false"])
+        out = run_deck(args.impm, os.path.join(args.decks, args.mesh_deck),
+                       [grid, "Bodies/cylinder/Mesh File=" + exo, "Output/Exodus=false"]
+                       + args.set)
         mesh.append(errors(out.table("_particles.csv")))
         out.remove()
+        if args.mesh_only:
+            print("level %d: %d cells; mesh %d particles e_u %.3e e_s %.3e"
+                  % (k, cells, mesh[-1][2], mesh[-1][0], mesh[-1][1]), flush=True)
+            continue
         pixels = 16 * 2 ** k
         png = os.path.join(work, "annulus_%d.png" % k)
         write_annulus(png, pixels)
@@ -139,6 +145,22 @@ def plot(path, mesh, image):
     fig.savefig(path, dpi=120)
 
 
+def mesh_errors_only(args, mesh):
+    """The mesh body's e_u at each level against --max-errors and --min-errors."""
+    eu = [m[0] for m in mesh]
+    print("mesh e_u: %s; rates %s" % (" ".join("%.3e" % e for e in eu),
+                                       " ".join("%.2f" % rate(eu, k) for k in range(1, len(eu)))))
+    failures = []
+    for k, e in enumerate(eu):
+        if args.max_errors and not e <= args.max_errors[k]:
+            failures.append("level %d: e_u %.3e above %g" % (k, e, args.max_errors[k]))
+        if args.min_errors and not e >= args.min_errors[k]:
+            failures.append("level %d: e_u %.3e below %g" % (k, e, args.min_errors[k]))
+    for f in failures:
+        print("FAIL:", f)
+    return 1 if failures else 0
+
+
 def fine_grids(args):
     """The committed 8 x 19 mesh on grids finer than it: the mesh limits e_u, the grid must not
     spoil it.  Returns the exit status."""
@@ -158,6 +180,7 @@ def fine_grids(args):
 
 
 def main():
+    global NU
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--impm", required=True)
     ap.add_argument("--mesher", required=True)
@@ -173,7 +196,19 @@ def main():
                          "finer than the mesh (nodes that its domains barely reach); e_u must "
                          "stay at or below --max-error")
     ap.add_argument("--max-error", type=float, default=1e-3)
+    ap.add_argument("--mesh-deck", default="cylinder_lame_mesh.xml",
+                    help="the mesh body's deck in --decks")
+    ap.add_argument("--nu", type=float, default=NU,
+                    help="the mesh deck's Poisson ratio, for the exact solution")
+    ap.add_argument("--set", action="append", default=[], help="overrides for the mesh deck")
+    ap.add_argument("--mesh-only", action="store_true",
+                    help="the mesh body alone: its e_u at every level within --max-errors")
+    ap.add_argument("--max-errors", type=float, nargs="+",
+                    help="with --mesh-only: the largest e_u at each level")
+    ap.add_argument("--min-errors", type=float, nargs="+",
+                    help="with --mesh-only: the smallest e_u at each level (a method that locks)")
     args = ap.parse_args()
+    NU = args.nu
     if args.fine_grids:
         sys.exit(fine_grids(args))
     work = os.path.abspath(tempfile.mkdtemp(prefix="lame-", dir="."))
@@ -181,6 +216,8 @@ def main():
         mesh, image = run_levels(args, work)
     finally:
         shutil.rmtree(work, ignore_errors=True)
+    if args.mesh_only:
+        sys.exit(mesh_errors_only(args, mesh))
     text = table(mesh, image)
     print(text)
     if args.table:
