@@ -177,6 +177,21 @@ void addFBarTangent(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Spac
   const auto grad = map.grad;
   const auto section = particles.section;
   const auto volume = particles.volume;
+  // b_k = g_p^-T G_k for every map entry k, once: each is read by every row of its cell.
+  Kokkos::View<double* [Dim], typename Space::memory_space> b(
+      Kokkos::ViewAllocateWithoutInitializing("F-bar b"), grad.extent(0));
+  Kokkos::parallel_for(
+      "impm::fbarSpatialGradients", RangePolicy<Space>(0, map.numParticles()),
+      KOKKOS_LAMBDA(const int p) {
+        double ginv[Dim][Dim];
+        inverseOf<Dim>(g, p, ginv);
+        for (std::size_t k = rowPtr(p); k < rowPtr(p + 1); ++k) {
+          double bk[Dim];
+          spatialGradient<Dim>(ginv, grad, k, bk);
+          for (int c = 0; c < Dim; ++c)
+            b(k, c) = bk[c];
+        }
+      });
   Kokkos::parallel_for(
       "impm::fbarTangent", RangePolicy<Space>(0, groups.size()), KOKKOS_LAMBDA(const int c) {
         const std::size_t first = start(c), last = start(c + 1);
@@ -184,8 +199,6 @@ void addFBarTangent(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Spac
           return;  // beta = b_p: the coupling vanishes
         for (std::size_t m = first; m < last; ++m) {
           const int p = order(m);
-          double ginv[Dim][Dim];
-          inverseOf<Dim>(g, p, ginv);
           // AG_aB = sum_cD An_aBcD gbar_cD, gbar = theta g
           double AG[Dim][Dim];
           for (int a = 0; a < Dim; ++a)
@@ -206,25 +219,18 @@ void addFBarTangent(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Spac
               Q[a] *= scale;
             }
             NodeRowsAccumulator<LocalMatrix, Dim> rows(K, entryDofs(ki));
-            const auto addColumns = [&](int q, double weight, const double qinv[Dim][Dim]) {
-              for (std::size_t kj = rowPtr(q); kj < rowPtr(q + 1); ++kj) {
-                double b[Dim];
-                spatialGradient<Dim>(qinv, grad, kj, b);
+            const auto addColumns = [&](int q, double weight) {
+              for (std::size_t kj = rowPtr(q); kj < rowPtr(q + 1); ++kj)
                 for (int col = 0; col < Dim; ++col) {
                   double s[Dim];
                   for (int a = 0; a < Dim; ++a)
-                    s[a] = weight * Q[a] * b[col];
+                    s[a] = weight * Q[a] * b(kj, col);
                   rows.add(entryDofs(kj) + col, s);
                 }
-              }
             };
-            for (std::size_t n = first; n < last; ++n) {
-              const int q = order(n);
-              double qinv[Dim][Dim];
-              inverseOf<Dim>(g, q, qinv);
-              addColumns(q, omega(q), qinv);
-            }
-            addColumns(p, -1.0, ginv);
+            for (std::size_t n = first; n < last; ++n)
+              addColumns(order(n), omega(order(n)));
+            addColumns(p, -1.0);
           }
         }
       });

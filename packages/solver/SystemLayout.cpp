@@ -78,7 +78,7 @@ void addCellNodes(const CellGroups<>& cells, LayoutKey<Dim>& key) {
 
 // The key's cell nodes as overlap indices of their first DOFs (invalid: not unknowns).
 template <int Dim>
-NodeGroups cellGroupsOf(const LayoutKey<Dim>& key, const DofMap<Dim>& dofs) {
+NodeGroups cellNodeGroups(const LayoutKey<Dim>& key, const DofMap<Dim>& dofs) {
   NodeGroups groups;
   if (key.cellStart.empty())
     return groups;
@@ -388,7 +388,7 @@ LaidOut<Dim> layoutOf(const LayoutInputs<Dim>& in, LayoutCache<Dim>& cache) {
       graphCouplings.emplace_back(dof, dof);
     }
     fresh->graph = buildGraph(in.map, out.entryDofs, fresh->dofs, graphCouplings, fresh->coupling,
-                              &fresh->adjacency, cellGroupsOf(key, fresh->dofs));
+                              &fresh->adjacency, cellNodeGroups(key, fresh->dofs));
   }
   out.layout = fresh;
   cache.keep(std::move(key), out);
