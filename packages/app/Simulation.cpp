@@ -414,12 +414,22 @@ std::unique_ptr<Output<Dim>> Simulation<Dim>::startOutput(const History<Dim>& hi
 }
 
 template <int Dim>
+double Simulation<Dim>::ghostPenalty() const {
+  // Total-Lagrangian steps solve on the reference grid, whose slivers the direct solve
+  // takes as they are; the penalty would only cost accuracy there (doc/theory.md).
+  if (kinematics_ != Kinematics::updatedLagrangian)
+    return 0.0;
+  return deck_.sublist("Discretization").get<double>("Ghost Penalty");
+}
+
+template <int Dim>
 std::unique_ptr<Stepper<Dim>> Simulation<Dim>::makeStepper() {
   StepperSetup<Dim> setup{
       *ownership_,
       method_,
       kinematics_,
       fbar_,
+      ghostPenalty(),
       particles_,
       materials_,
       conditions_,

@@ -56,6 +56,8 @@ class Simulation {
   // The output files (continued on a restart) with the initial state written (not on one).
   std::unique_ptr<Output<Dim>> startOutput(const History<Dim>& history);
   std::unique_ptr<Stepper<Dim>> makeStepper();
+  // The ghost penalty's gamma of this run's steps (Discretization/Ghost Penalty).
+  double ghostPenalty() const;
   void checkExplicitTimeStep() const;
   OperatorKind operatorKind() const;
   std::vector<double> reactions() const;

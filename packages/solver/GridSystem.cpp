@@ -82,7 +82,8 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
                             Kinematics kinematics, const ParticleSet<Dim>& particles,
                             const Materials<Dim>& materials, const Contributions& contributions,
                             double time, double loadFactor, StepWorkspace<Dim>* workspace,
-                            LayoutCache<Dim>* layouts, NodeCoupling coupling, FBar fbar)
+                            LayoutCache<Dim>* layouts, NodeCoupling coupling, FBar fbar,
+                            double ghostPenalty)
     : grid_(ownership.grid()),
       kinematics_(kinematics),
       fbar_(fbar),
@@ -93,9 +94,12 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
       loadFactor_(loadFactor),
       particleGridMap_(buildMapCollectively(ownership, method, kinematics, particles)),
       cellGroups_(cellGroupsOf(fbar, ownership, kinematics, particles)),
+      ghostPenalty_(coupling == NodeCoupling::shared ? ghostPenalty : 0.0),
+      ghostFaces_(ghostPenalty_ > 0.0 ? ghostFaces(ownership, particleGridMap_) : GhostFaces{}),
       laidOut_(layoutOf(
           LayoutInputs<Dim>{ownership, particleGridMap_, particles, contributions, time, loadFactor,
-                            coupling, fbar == FBar::none ? nullptr : &cellGroups_},
+                            coupling, fbar == FBar::none ? nullptr : &cellGroups_,
+                            ghostPenalty_ > 0.0 ? &ghostFaces_ : nullptr},
           layouts ? *layouts : ownLayouts_)),
       layout_(*laidOut_.layout),
       firstExtra_(layout_.firstExtra),
@@ -107,6 +111,21 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
                 .arrays(particles.size(), kinematics, fbar != FBar::none)),
       trial_(particles, materials) {
   loaded_ = carriesForces<Dim>(particles_);
+  if (ghostPenalty_ > 0.0)
+    ghostDofs_ =
+        ghostFaceDofs<Dim>(ghostFaces_, grid_, *dofs_.overlapMap(), ghostPenalty_ * lawModulus());
+}
+
+template <int Dim>
+double GridSystem<Dim>::lawModulus() const {
+  if (!lawModulus_) {
+    double modulus = 0.0;
+    for (std::size_t m = 0; m < materials_.size(); ++m)
+      modulus = std::max(modulus, maxModulus(particles_, materials_, static_cast<int>(m),
+                                             *dofs_.ownedMap()->getComm()));
+    lawModulus_ = modulus > 0 ? modulus : 1.0;
+  }
+  return *lawModulus_;
 }
 
 template <int Dim>
@@ -116,14 +135,10 @@ double GridSystem<Dim>::constraintScale() const {
   // modulus is a pass over the particles that systems without prescribed unknowns (every
   // step of an explicit bar with Robin ends) do not need.
   if (!constraintScale_) {
-    double modulus = 0.0;
-    for (std::size_t m = 0; m < materials_.size(); ++m)
-      modulus = std::max(modulus, maxModulus(particles_, materials_, static_cast<int>(m),
-                                             *dofs_.ownedMap()->getComm()));
     double h = grid_.spacing[0];
     for (int d = 1; d < Dim; ++d)
       h = std::min(h, grid_.spacing[d]);
-    constraintScale_ = (modulus > 0 ? modulus : 1.0) * std::pow(h, Dim - 2);
+    constraintScale_ = lawModulus() * std::pow(h, Dim - 2);
   }
   return *constraintScale_;
 }
@@ -410,6 +425,8 @@ void GridSystem<Dim>::assembleResidual(const Vector& xOverlap, Vector& residual)
     if (a)
       addConsistentInertiaForce<Dim>(particleGridMap_, entryDofs_, particles_.mass,
                                      a->getLocalViewDevice(Tpetra::Access::ReadOnly), local);
+    if (!frozen_ && ghostDofs_.size() > 0)
+      addGhostForce<Dim>(ghostDofs_, xOverlap.getLocalViewDevice(Tpetra::Access::ReadOnly), local);
   }
   {
     auto local = f.getLocalViewHost(Tpetra::Access::ReadWrite);
@@ -480,6 +497,8 @@ void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jac
       if (fbar_ != FBar::none)
         addFBarTangent<Dim>(particleGridMap_, entryDofs_, particles_, cellGroups_, work_.g,
                             work_.theta, work_.omega, work_.An, J.getLocalMatrixDevice());
+      if (ghostDofs_.size() > 0)
+        addGhostTangent<Dim>(ghostDofs_, J.getLocalMatrixDevice());
     }
     if (inertia_.c0 != 0.0 && inertia_.mass == MassType::lumped)
       addDiagonal(inertia_.c0, lumpedMass()->getLocalViewDevice(Tpetra::Access::ReadOnly),

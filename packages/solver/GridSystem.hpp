@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "assembly/FBar.hpp"
+#include "assembly/GhostPenalty.hpp"
 #include "assembly/Kinematics.hpp"
 #include "assembly/Mass.hpp"
 #include "basis/Method.hpp"
@@ -37,12 +38,14 @@ class GridSystem : public ResidualModel {
   // across steps; null `workspace` or `layouts`: the system's own.  `coupling`: the graph's
   // node pairs; NodeCoupling::self serves only a Jacobian with hasDiagonalJacobian().
   // `fbar`: the anti-locking average of the laws' F (assembly/FBar.hpp); every particle
-  // must then be on the rank that owns the cell of its map position.
+  // must then be on the rank that owns the cell of its map position.  `ghostPenalty`: gamma
+  // of the penalty on the cut cells' faces (assembly/GhostPenalty.hpp); 0: none.
   GridSystem(const NodeOwnership<Dim>& ownership, Method method, Kinematics kinematics,
              const ParticleSet<Dim>& particles, const Materials<Dim>& materials,
              const Contributions& contributions, double time, double loadFactor,
              StepWorkspace<Dim>* workspace = nullptr, LayoutCache<Dim>* layouts = nullptr,
-             NodeCoupling coupling = NodeCoupling::shared, FBar fbar = FBar::none);
+             NodeCoupling coupling = NodeCoupling::shared, FBar fbar = FBar::none,
+             double ghostPenalty = 0.0);
 
   // The inertia term M a of a dynamic step, a = c0 du - r on the nodal unknowns.  With the
   // lumped mass, M a is m_i a_i on the owned rows (lumpedMass()): one pass over the grid
@@ -167,6 +170,8 @@ class GridSystem : public ResidualModel {
   // The stress a frozen internal force uses, at the step start, into work_ once: the
   // particles' committed stress (startFromCommittedStress()) or the laws' at du = 0.
   void stressAtStepStart();
+  // The largest small-strain modulus of the laws, made on first use.  Collective.
+  double lawModulus() const;
   // The diagonal of a prescribed row, made on first use.  Collective.
   double constraintScale() const;
   // Owned local index and prescribed increment of every constrained unknown: the
@@ -209,6 +214,8 @@ class GridSystem : public ResidualModel {
   double time_, loadFactor_;
   ParticleGridMap<Dim> particleGridMap_;
   CellGroups<> cellGroups_;  // F-bar's averaging groups (empty without F-bar)
+  double ghostPenalty_;
+  GhostFaces ghostFaces_;  // the faces the ghost penalty holds (none without it)
   LayoutCache<Dim> ownLayouts_{false};
   LaidOut<Dim> laidOut_;
   const SystemLayout<Dim>& layout_;
@@ -230,6 +237,8 @@ class GridSystem : public ResidualModel {
   // The x of the stress in work_ (null: none, or the materials have committed since), and
   // on the overlap map.
   Teuchos::RCP<const Vector> stressX_, stressXOverlap_;
+  GhostFaceDofs<> ghostDofs_;                      // ghostFaces_ as the kernels read them
+  mutable std::optional<double> lawModulus_;       // lawModulus()
   mutable std::optional<double> constraintScale_;  // constraintScale()
   mutable std::optional<bool> anyConstrained_;     // anyConstrained()
   // constrainedRows(); reset by setTime() and commit().

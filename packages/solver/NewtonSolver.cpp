@@ -125,6 +125,18 @@ class IterationRecorder : public NOX::Observer {
     const double update = relativeUpdate(solver);
     report_.residualNorms.push_back(norm);
     report_.linearIterations.push_back(linear);
+    if (!stats->linearSolve.lastLinearSolve_Converged && report_.unconvergedSolve.empty()) {
+      std::ostringstream note;
+      const double achieved = stats->linearSolve.lastLinearSolve_AchievedTolerance;
+      note << "the linear solve of Newton iteration " << report_.iterations()
+           << " stopped short of its tolerance " << linearSolveList(nox_).get<double>("Tolerance")
+           << " after " << linear << " iterations";
+      if (achieved > 0.0)
+        note << " (relative residual " << achieved << ")";
+      note << ", and |R| went from " << report_.residualNorms[report_.residualNorms.size() - 2]
+           << " to " << norm;
+      report_.unconvergedSolve = note.str();
+    }
     if (log_)
       *log_ << indent_ << "newton " << std::setw(2) << report_.iterations()
             << "  |R| = " << std::scientific << std::setprecision(3) << norm
@@ -367,6 +379,10 @@ NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vecto
                          ? "no convergence in " + std::to_string(maxIterations_) + " iterations"
                          : "NOX stopped (line search or linear solve failure)";
   }
+  if (!report.converged && !report.unconvergedSolve.empty() &&
+      report.failure.rfind("linear solver failure", 0) != 0)
+    report.failure =
+        "linear solver failure: " + report.unconvergedSolve + "; then " + report.failure;
   if (!report.converged && !printed.empty())
     report.failure += "; the linear solver printed: " + printed;
   return report;

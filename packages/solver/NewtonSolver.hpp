@@ -21,6 +21,9 @@ struct NewtonReport {
   std::vector<double> residualNorms;  // ||R|| before the first and after every iteration
   std::vector<int> linearIterations;  // per Newton iteration
   std::string failure;                // why it stopped, when not converged
+  // The first linear solve that stopped short of its tolerance (empty: none did): named in
+  // `failure` when the step fails, since an inexact direction is then its likely cause.
+  std::string unconvergedSolve;
 
   int iterations() const { return static_cast<int>(linearIterations.size()); }
   int totalLinearIterations() const;

@@ -34,9 +34,10 @@ Stepper<Dim>::Stepper(StepperSetup<Dim> setup, double nominal, double minimum, b
 
 template <int Dim>
 Teuchos::RCP<GridSystem<Dim>> Stepper<Dim>::buildSystem(double time, double loadFactor) {
-  return Teuchos::rcp(new GridSystem<Dim>(
-      setup_.ownership, setup_.method, setup_.kinematics, setup_.particles, setup_.materials,
-      setup_.contributions, time, loadFactor, &workspace_, &layouts_, nodeCoupling_, setup_.fbar));
+  return Teuchos::rcp(new GridSystem<Dim>(setup_.ownership, setup_.method, setup_.kinematics,
+                                          setup_.particles, setup_.materials, setup_.contributions,
+                                          time, loadFactor, &workspace_, &layouts_, nodeCoupling_,
+                                          setup_.fbar, setup_.ghostPenalty));
 }
 
 template <int Dim>

@@ -19,7 +19,8 @@ struct StepperSetup {
   const NodeOwnership<Dim>& ownership;
   Method method;
   Kinematics kinematics;
-  FBar fbar;  // the laws' F averaged over each cell (assembly/FBar.hpp)
+  FBar fbar;            // the laws' F averaged over each cell (assembly/FBar.hpp)
+  double ghostPenalty;  // gamma of the cut cells' face penalty (assembly/GhostPenalty.hpp)
   ParticleSet<Dim>& particles;
   const Materials<Dim>& materials;
   const std::vector<std::shared_ptr<Contribution<Dim>>>& contributions;

@@ -55,36 +55,49 @@ LayoutKey<Dim> keyOf(const NodeOwnership<Dim>& ownership, const ParticleGridMap<
   return key;
 }
 
-// F-bar: the nodes of each cell's particles, sorted, into the key (shared coupling: `touched`
-// lists every entry's node).
+// F-bar: the nodes of each cell's particles, sorted, into the key's groups (shared coupling:
+// `touched` lists every entry's node).
 template <int Dim>
 void addCellNodes(const CellGroups<>& cells, LayoutKey<Dim>& key) {
   auto start = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.start);
   auto order = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.order);
-  key.cellStart.assign(1, 0);
   for (std::size_t c = 0; c < cells.size(); ++c) {
-    const std::size_t first = key.cellNodes.size();
+    const std::size_t first = key.groupNodes.size();
     for (std::size_t m = start(c); m < start(c + 1); ++m) {
       const int p = order(m);
-      key.cellNodes.insert(key.cellNodes.end(), key.touched.begin() + key.rowPtr[p],
-                           key.touched.begin() + key.rowPtr[p + 1]);
+      key.groupNodes.insert(key.groupNodes.end(), key.touched.begin() + key.rowPtr[p],
+                            key.touched.begin() + key.rowPtr[p + 1]);
     }
-    std::sort(key.cellNodes.begin() + first, key.cellNodes.end());
-    key.cellNodes.erase(std::unique(key.cellNodes.begin() + first, key.cellNodes.end()),
-                        key.cellNodes.end());
-    key.cellStart.push_back(key.cellNodes.size());
+    std::sort(key.groupNodes.begin() + first, key.groupNodes.end());
+    key.groupNodes.erase(std::unique(key.groupNodes.begin() + first, key.groupNodes.end()),
+                         key.groupNodes.end());
+    key.groupStart.push_back(key.groupNodes.size());
   }
 }
 
-// The key's cell nodes as overlap indices of their first DOFs (invalid: not unknowns).
+// The ghost penalty's faces: their nodes into the key's touched nodes (after every entry's
+// and the contributions') and, sorted, into its groups.
 template <int Dim>
-NodeGroups cellNodeGroups(const LayoutKey<Dim>& key, const DofMap<Dim>& dofs) {
+void addFaceNodes(const GhostFaces& faces, LayoutKey<Dim>& key) {
+  key.touched.insert(key.touched.end(), faces.nodes.begin(), faces.nodes.end());
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const auto first = faces.nodes.begin() + f * kFaceNodes<Dim>;
+    const std::size_t at = key.groupNodes.size();
+    key.groupNodes.insert(key.groupNodes.end(), first, first + kFaceNodes<Dim>);
+    std::sort(key.groupNodes.begin() + at, key.groupNodes.end());
+    key.groupStart.push_back(key.groupNodes.size());
+  }
+}
+
+// The key's groups as overlap indices of their first DOFs (invalid: not unknowns).
+template <int Dim>
+NodeGroups nodeGroups(const LayoutKey<Dim>& key, const DofMap<Dim>& dofs) {
   NodeGroups groups;
-  if (key.cellStart.empty())
+  if (key.groupStart.empty())
     return groups;
-  groups.start = key.cellStart;
+  groups.start = key.groupStart;
   const auto& overlap = *dofs.overlapMap();
-  for (const GlobalId node : key.cellNodes)
+  for (const GlobalId node : key.groupNodes)
     groups.nodes.push_back(overlap.getLocalElement(dofs.nodeDof(node, 0)));
   return groups;
 }
@@ -273,10 +286,21 @@ bool LayoutCache<Dim>::pairsCovered(const LayoutKey<Dim>& key, const EntryDofs<>
     if (node == Teuchos::OrdinalTraits<LO>::invalid() || !integrated[node])
       return false;
   }
+  const auto& adjacency = layout_->adjacency;
+  // Every pair of a group (F-bar's cells, the ghost penalty's faces) must be in the graph.
+  for (std::size_t g = 0; g + 1 < key.groupStart.size(); ++g)
+    for (std::size_t i = key.groupStart[g]; i < key.groupStart[g + 1]; ++i) {
+      const LO a = overlap.getLocalElement(layout_->dofs.nodeDof(key.groupNodes[i], 0));
+      for (std::size_t j = key.groupStart[g]; j < key.groupStart[g + 1]; ++j) {
+        const LO b = overlap.getLocalElement(layout_->dofs.nodeDof(key.groupNodes[j], 0));
+        if (a == Teuchos::OrdinalTraits<LO>::invalid() ||
+            b == Teuchos::OrdinalTraits<LO>::invalid() || !adjacency.couples(a, b))
+          return false;
+      }
+    }
   // A particle that touches the nodes it touched in the kept key adds no pair; the kept
   // key's pairs are in the graph (it was built from them, or covered them).
   const bool sameParticles = key.rowPtr.size() == key_.rowPtr.size();
-  const auto& adjacency = layout_->adjacency;
   for (std::size_t p = 0; p + 1 < key.rowPtr.size(); ++p) {
     const std::size_t first = key.rowPtr[p], last = key.rowPtr[p + 1];
     if (sameParticles && last - first == key_.rowPtr[p + 1] - key_.rowPtr[p] &&
@@ -336,8 +360,12 @@ LaidOut<Dim> layoutOf(const LayoutInputs<Dim>& in, LayoutCache<Dim>& cache) {
   std::vector<int> firstExtra;
   std::vector<ExtraDof> extras;
   auto key = keyOf(in.ownership, in.map, in.contributions, in.coupling, firstExtra, extras);
+  if ((in.cells || in.faces) && in.coupling == NodeCoupling::shared)
+    key.groupStart.assign(1, 0);
   if (in.cells && in.coupling == NodeCoupling::shared)
     addCellNodes(*in.cells, key);
+  if (in.faces && in.coupling == NodeCoupling::shared)
+    addFaceNodes(*in.faces, key);
   auto kept = cache.reusable(key, in.map, comm);
   std::shared_ptr<SystemLayout<Dim>> fresh;
   LaidOut<Dim> out;
@@ -388,7 +416,7 @@ LaidOut<Dim> layoutOf(const LayoutInputs<Dim>& in, LayoutCache<Dim>& cache) {
       graphCouplings.emplace_back(dof, dof);
     }
     fresh->graph = buildGraph(in.map, out.entryDofs, fresh->dofs, graphCouplings, fresh->coupling,
-                              &fresh->adjacency, cellNodeGroups(key, fresh->dofs));
+                              &fresh->adjacency, nodeGroups(key, fresh->dofs));
   }
   out.layout = fresh;
   cache.keep(std::move(key), out);

@@ -41,6 +41,7 @@
 #include <vector>
 
 #include "assembly/FBar.hpp"
+#include "assembly/GhostPenalty.hpp"
 #include "assembly/Graph.hpp"
 #include "assembly/Kinematics.hpp"
 #include "core/DofMap.hpp"
@@ -71,17 +72,18 @@ struct LayoutKey {
   int ownershipRevision = -1;
   NodeCoupling coupling = NodeCoupling::shared;
   std::vector<std::size_t> rowPtr;   // the map's rows
-  std::vector<GlobalId> touched;     // the map's nodes, then the contributions'
+  std::vector<GlobalId> touched;     // the map's nodes, then the contributions', the faces'
   std::vector<GlobalId> extraNodes;  // the anchor node of every extra unknown
-  // F-bar: the nodes of each cell's particles (group k: cellNodes[cellStart[k] ...
-  // cellStart[k + 1]), sorted), which the graph couples; empty without F-bar.
-  std::vector<std::size_t> cellStart;
-  std::vector<GlobalId> cellNodes;
+  // Nodes the graph couples beyond a particle's (group k: groupNodes[groupStart[k] ...
+  // groupStart[k + 1]), sorted): F-bar's cells (the nodes of each cell's particles), then
+  // the ghost penalty's faces (the nodes of their two cells); empty without either.
+  std::vector<std::size_t> groupStart;
+  std::vector<GlobalId> groupNodes;
 
   bool operator==(const LayoutKey& o) const {
     return ownership == o.ownership && ownershipRevision == o.ownershipRevision &&
            coupling == o.coupling && rowPtr == o.rowPtr && touched == o.touched &&
-           extraNodes == o.extraNodes && cellStart == o.cellStart && cellNodes == o.cellNodes;
+           extraNodes == o.extraNodes && groupStart == o.groupStart && groupNodes == o.groupNodes;
   }
 };
 
@@ -184,6 +186,7 @@ struct LayoutInputs {
   double time, loadFactor;  // for the contributions' context
   NodeCoupling coupling;
   const CellGroups<>* cells = nullptr;  // F-bar's groups, whose nodes the graph couples
+  const GhostFaces* faces = nullptr;    // the ghost penalty's, whose nodes the graph couples
 };
 
 // The layout of the system on `in.map`: the cache's when nothing it depends on changed,

@@ -248,9 +248,9 @@ def translation(args):
 
 def history(args):
     """Every row of a history column lies in [--min, --max] (an explicit run's linear
-    iterations, say)."""
+    iterations, say); with --last, the last row's (the end of a run)."""
     _, rows = run_tables(args, args.set, args.np, "impm-history-")
-    values = [float(h[args.column]) for h in rows]
+    values = [float(h[args.column]) for h in (rows[-1:] if args.last else rows)]
     print("%s over %d steps: min %g max %g" % (args.column, len(values), min(values), max(values)))
     if min(values) < args.min or max(values) > args.max:
         print("FAIL: %s leaves [%g, %g]" % (args.column, args.min, args.max))
@@ -494,8 +494,9 @@ def fails(args):
         # A numerical failure keeps what was written: complete history rows, readable Exodus.
         history = os.path.join(out, stem(args.deck) + "_history.csv")
         rows = read_csv(history) if os.path.exists(history) else []
-        if len(rows) < 2:
-            problems.append("the history holds %d rows, expected the steps done" % len(rows))
+        if len(rows) < args.steps_done + 1:
+            problems.append("the history holds %d rows, expected the initial one and %d steps"
+                            % (len(rows), args.steps_done))
         problems += non_finite_history(rows)
         for f in sorted(os.listdir(out)) if os.path.exists(out) else []:
             if f.endswith(".exo"):
@@ -709,6 +710,7 @@ def main():
     h.add_argument("--column", required=True)
     h.add_argument("--min", type=float, default=-float("inf"))
     h.add_argument("--max", type=float, default=float("inf"))
+    h.add_argument("--last", action="store_true", help="judge the last row only")
     h.add_argument("--np", type=int, default=1)
     h.add_argument("--set", action="append", default=[])
 
@@ -754,6 +756,8 @@ def main():
     f.add_argument("--set", action="append", default=[])
     f.add_argument("--outputs-remain", action="store_true",
                    help="a numerical failure: the outputs of the steps done must remain readable")
+    f.add_argument("--steps-done", type=int, default=1,
+                   help="with --outputs-remain: the steps done before the failure, at least")
     f.add_argument("--same-error-with", action="append", default=[],
                    help="a --set under which the run must end with the same impm: line")
 

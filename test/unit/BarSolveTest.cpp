@@ -393,6 +393,33 @@ TEST(GridSystem, JacobianWithFBarIsTheDerivativeOfTheResidualIn2D) {
       }
 }
 
+// The ghost penalty (assembly/GhostPenalty.hpp) in the residual and the Jacobian: the
+// Jacobian stays the residual's derivative with a penalty large enough to dominate, and the
+// penalty changes it (the block leaves empty cells around it, so some faces are cut).
+TEST(GridSystem, JacobianWithGhostPenaltyIsTheDerivativeOfTheResidual) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  NodeOwnership<2> own(makeGridGeometry<2>({0.0, 0.0}, {1.0, 1.0}, {5, 5}), comm);
+  const std::vector<std::shared_ptr<Contribution<2>>> none;
+  for (Method method : {Method::mpm, Method::gimp, Method::cpdi}) {
+    auto ps = deformedBlock(own, method, Kinematics::updatedLagrangian);
+    const auto materials = elasticOn(ps, "neo-hookean");
+    GridSystem<2> plain(own, method, Kinematics::updatedLagrangian, ps, materials, none, 1.0, 1.0);
+    GridSystem<2> ghost(own, method, Kinematics::updatedLagrangian, ps, materials, none, 1.0, 1.0,
+                        nullptr, nullptr, NodeCoupling::shared, FBar::none, 0.5);
+    EXPECT_LT(jacobianError(ghost, 0.003), 1e-9) << methodName(method);
+    // The same increment: the residuals differ by the penalty's force.
+    Vector x(ghost.unknownMap()), r0(plain.unknownMap()), r1(ghost.unknownMap());
+    x.randomize(-0.003, 0.003);
+    Vector xPlain(plain.unknownMap());
+    ASSERT_TRUE(plain.unknownMap()->isSameAs(*ghost.unknownMap())) << methodName(method);
+    Tpetra::deep_copy(xPlain, x);
+    plain.evaluate(xPlain, &r0, nullptr);
+    ghost.evaluate(x, &r1, nullptr);
+    r1.update(-1.0, r0, 1.0);
+    EXPECT_GT(r1.norm2(), 1e-6 * r0.norm2()) << methodName(method);
+  }
+}
+
 // A law whose stress is finite and whose tangent is not.
 class NanTangentLaw : public Material<2> {
  public:
