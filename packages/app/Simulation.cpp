@@ -15,6 +15,7 @@
 #include "app/GridFields.hpp"
 #include "app/History.hpp"
 #include "app/TimeIntegration.hpp"
+#include "assembly/DomainDistortion.hpp"
 #include "assembly/Energy.hpp"
 #include "assembly/ParticleUpdate.hpp"
 #include "bc/RobinEnd.hpp"
@@ -414,6 +415,27 @@ std::unique_ptr<Output<Dim>> Simulation<Dim>::startOutput(const History<Dim>& hi
 }
 
 template <int Dim>
+void Simulation<Dim>::warnOfDistortedDomains(int step) {
+  // Updated-Lagrangian gimp and cpdi domains follow F; the first step past the mark says so.
+  if (distortionWarned_ || kinematics_ != Kinematics::updatedLagrangian ||
+      (method_ != Method::gimp && method_ != Method::cpdi))
+    return;
+  const auto d = domainDistortion(particles_, *comm_);
+  if (d.worst <= kDistortionWarning)
+    return;
+  distortionWarned_ = true;
+  if (comm_->getRank() == 0)
+    std::cout << "impm: warning: step " << step << ": the domain of particle " << d.particle
+              << " has lost its shape: |D| |D^-1| / Dim = " << std::setprecision(3) << d.worst
+              << " (D maps its initial domain onto the current one; 1: the initial shape, "
+              << kDistortionWarning << ": in 2-D about ten times longer than wide; smallest det D "
+              << d.smallestJ
+              << "); such domains reach far through cells whose nodes they barely cover, and "
+                 "the results there lose accuracy (doc/theory.md).  Warned once\n"
+              << std::setprecision(6);
+}
+
+template <int Dim>
 double Simulation<Dim>::ghostPenalty() const {
   // Total-Lagrangian steps solve on the reference grid, whose slivers the direct solve
   // takes as they are; the penalty would only cost accuracy there (doc/theory.md).
@@ -474,6 +496,7 @@ std::vector<std::string> Simulation<Dim>::run() {
     if (r.hasEnergies)  // the history's steps (Output/History Every)
       output->appendHistory(history.row(r, F[0], F[1], particles_, *comm_));
     printProgress(r, F);
+    warnOfDistortedDomains(r.step);
     if (output->writesFields() && (output->due(r.step) || r.last)) {
       IMPM_TIMER("output");
       particles_.bringUpToDate();

@@ -58,6 +58,9 @@ class Simulation {
   std::unique_ptr<Stepper<Dim>> makeStepper();
   // The ghost penalty's gamma of this run's steps (Discretization/Ghost Penalty).
   double ghostPenalty() const;
+  // Prints a warning the first time a particle domain passes kDistortionWarning
+  // (assembly/DomainDistortion.hpp).  Collective.
+  void warnOfDistortedDomains(int step);
   void checkExplicitTimeStep() const;
   OperatorKind operatorKind() const;
   std::vector<double> reactions() const;
@@ -88,6 +91,7 @@ class Simulation {
   std::shared_ptr<RobinEnd> left_, right_;  // the ends whose forces are F0 and FL
   std::unique_ptr<NewtonSolver> newton_;
   Verbosity verbosity_;
+  bool distortionWarned_ = false;          // warnOfDistortedDomains()
   std::unique_ptr<ProgressLog> progress_;  // made when run() starts
   std::unique_ptr<Verification> verification_;
   std::unique_ptr<GridFields<Dim>> gridFields_;

@@ -257,6 +257,56 @@ def history(args):
         sys.exit(1)
 
 
+def exclusive(args):
+    """A second run on the output directory of a run under way is refused before it writes
+    (one line naming the other process, exit 1); the first ends as if alone, its history one
+    row per step, and leaves no lock file behind."""
+    import time
+    out = os.path.abspath(os.path.join(tempfile.mkdtemp(prefix="impm-exclusive-", dir="."), "out"))
+    lock = os.path.join(out, ".impm.lock")
+    first = subprocess.Popen([args.impm, "--output-dir", out, "--quiet", args.deck],
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    for _ in range(3000):  # up to 30 s for the first run to take the lock
+        if os.path.exists(lock) or first.poll() is not None:
+            break
+        time.sleep(0.01)
+    second = run_impm(args, args.deck, out, [])
+    out1, err1 = first.communicate()
+    print(second.stderr.strip())
+    problems = []
+    if not os.path.exists(lock) and first.returncode is None:
+        problems.append("the first run took no lock")
+    lines = [l for l in second.stderr.splitlines() if l.startswith("impm:")]
+    if second.returncode != 1 or len(lines) != 1 or "is in use by another impm run (process" \
+            not in lines[0]:
+        problems.append("the second run: exit %d, %s" % (second.returncode, second.stderr[-300:]))
+    if first.returncode != 0:
+        problems.append("the first run failed: %s" % err1[-300:])
+    rows = read_csv(os.path.join(out, stem(args.deck) + "_history.csv"))
+    steps = [int(float(r["step"])) for r in rows]
+    if steps != list(range(len(steps))):
+        problems.append("the history's steps are not 0, 1, 2, ...: %s" % steps[:20])
+    if os.path.exists(lock):
+        problems.append("the lock file remains")
+    for p in problems:
+        print("CHECK FAILED:", p)
+    shutil.rmtree(os.path.dirname(out), ignore_errors=True)
+    sys.exit(1 if problems else 0)
+
+
+def extreme(args):
+    """The largest (--stat max) or smallest (--stat min) value of a particle column at the
+    end of the run lies in [--min, --max] (a runout, a settlement)."""
+    rows, _ = run_tables(args, args.set, args.np, "impm-extreme-")
+    values = [float(r[args.column]) for r in rows]
+    value = max(values) if args.stat == "max" else min(values)
+    print("%s of %s over %d particles: %.10g" % (args.stat, args.column, len(values), value))
+    if not args.min <= value <= args.max:
+        print("CHECK FAILED: %s of %s leaves [%g, %g]" % (args.stat, args.column, args.min,
+                                                          args.max))
+        sys.exit(1)
+
+
 # The columns of a particle's motion (displacement, position, tracked corners) and of a
 # body's extent: an explicit step on a fixed grid may let the motion wait and map the sum of
 # several steps' increments at once, which moves them by round-off (solver/DynamicStepper).
@@ -705,6 +755,18 @@ def main():
     t.add_argument("--np", type=int, default=1)
     t.add_argument("--set", action="append", default=[])
 
+    e = sub.add_parser("exclusive")
+    e.add_argument("--deck", required=True)
+
+    x = sub.add_parser("extreme")
+    x.add_argument("--deck", required=True)
+    x.add_argument("--column", required=True)
+    x.add_argument("--stat", choices=["max", "min"], required=True)
+    x.add_argument("--min", type=float, default=-float("inf"))
+    x.add_argument("--max", type=float, default=float("inf"))
+    x.add_argument("--np", type=int, default=1)
+    x.add_argument("--set", action="append", default=[])
+
     h = sub.add_parser("history")
     h.add_argument("--deck", required=True)
     h.add_argument("--column", required=True)
@@ -800,8 +862,9 @@ def main():
     args = p.parse_args()
     {"convergence": convergence, "ranks": ranks, "fails": fails, "docs": docs, "newton": newton,
      "same": same, "uniform": uniform, "translation": translation,
-     "history": history, "history-every": history_every, "unloading": unloading, "energy": energy,
-     "iterations": iterations}[args.check](args)
+     "history": history, "extreme": extreme, "exclusive": exclusive,
+     "history-every": history_every,
+     "unloading": unloading, "energy": energy, "iterations": iterations}[args.check](args)
 
 
 if __name__ == "__main__":
