@@ -25,6 +25,7 @@
 #include "core/StopRequest.hpp"
 #include "core/Timers.hpp"
 #include "io/InputDeck.hpp"
+#include "io/OutputLock.hpp"
 #include "material/MaterialFactory.hpp"
 #include "solver/DynamicStepper.hpp"
 #include "solver/QuasiStaticStepper.hpp"
@@ -483,6 +484,8 @@ std::vector<std::string> Simulation<Dim>::run() {
   History<Dim> history(bodies_->columnNames(), supports);
   if (!restored_)
     balanceAfterStep(0);  // the bodies may lie in some ranks' cells only
+  // One writer per output directory, from its first file to the last (io/OutputLock.hpp).
+  const OutputLock lock(outputDirectory_, *comm_);
   const auto output = startOutput(history);
   CheckpointSeries checkpoints(deck_.sublist("Output"), outputDirectory_, prefix_);
   int checkpointed = -1;      // the step of the last checkpoint written

@@ -42,6 +42,19 @@ std::uint64_t checksum(const std::vector<T>& values, std::size_t columns) {
   return sum;
 }
 
+// The name of an attribute's checksum, and the checksum of its name and value bytes.
+std::string checksumName(const std::string& attribute) {
+  return attribute + "_checksum";
+}
+
+std::uint64_t attributeHash(const std::string& name, const void* data, std::size_t bytes) {
+  std::vector<unsigned char> all(name.begin(), name.end());
+  all.push_back(0);
+  all.insert(all.end(), static_cast<const unsigned char*>(data),
+             static_cast<const unsigned char*>(data) + bytes);
+  return rowHash(0, all.data(), all.size());
+}
+
 }  // namespace
 
 std::uint64_t rowHash(std::size_t row, const void* data, std::size_t bytes) {
@@ -81,19 +94,29 @@ CheckpointWriter::~CheckpointWriter() {
   }
 }
 
+void CheckpointWriter::attributeChecksum(const std::string& name, const void* data,
+                                         std::size_t bytes) {
+  const unsigned long long sum = attributeHash(name, data, bytes);
+  require(nc_put_att_ulonglong(id_, NC_GLOBAL, checksumName(name).c_str(), NC_UINT64, 1, &sum),
+          "attribute " + checksumName(name));
+}
+
 void CheckpointWriter::attribute(const std::string& name, const std::string& value) {
   require(nc_put_att_text(id_, NC_GLOBAL, name.c_str(), value.size(), value.c_str()),
           "attribute " + name);
+  attributeChecksum(name, value.data(), value.size());
 }
 
 void CheckpointWriter::attribute(const std::string& name, const std::vector<double>& values) {
   require(nc_put_att_double(id_, NC_GLOBAL, name.c_str(), NC_DOUBLE, values.size(), values.data()),
           "attribute " + name);
+  attributeChecksum(name, values.data(), values.size() * sizeof(double));
 }
 
 void CheckpointWriter::attribute(const std::string& name, const std::vector<long long>& values) {
   require(nc_put_att_longlong(id_, NC_GLOBAL, name.c_str(), NC_INT64, values.size(), values.data()),
           "attribute " + name);
+  attributeChecksum(name, values.data(), values.size() * sizeof(long long));
 }
 
 void CheckpointWriter::declare(const std::string& name, std::size_t rows, std::size_t columns,
@@ -193,6 +216,7 @@ CheckpointReader::CheckpointReader(const std::string& path) : path_(path) {
     throw FileError(path, "has checkpoint format version " + std::to_string(version_) +
                               "; this impm reads format versions up to " +
                               std::to_string(kCheckpointVersion));
+  verifyAllAttributes();
   // A classic netCDF file cut short still opens (and reads zeros where its data is missing):
   // its variables must fit in it.
   const auto size = std::filesystem::file_size(path);
@@ -246,7 +270,46 @@ std::string CheckpointReader::text(const std::string& name) const {
     throw FileError(path_, "has no attribute '" + name + "'");
   std::string value(length, '\0');
   check(nc_get_att_text(id_, NC_GLOBAL, name.c_str(), value.data()), path_, name);
+  verifyAttribute(name, value.data(), value.size());
   return value;
+}
+
+void CheckpointReader::verifyAllAttributes() const {
+  // Every attribute, whether this restart reads it or not (a partition's, say, is read only
+  // with its table of cell owners).
+  int count = 0;
+  nc_inq_natts(id_, &count);
+  for (int k = 0; k < count; ++k) {
+    char name[NC_MAX_NAME + 1] = "";
+    nc_inq_attname(id_, NC_GLOBAL, k, name);
+    const std::string attribute = name;
+    if (attribute == kVersion || (attribute.size() > 9 && attribute.compare(attribute.size() - 9,
+                                                                            9, "_checksum") == 0))
+      continue;
+    nc_type type;
+    std::size_t length = 0, size = 0;
+    check(nc_inq_att(id_, NC_GLOBAL, name, &type, &length), path_, attribute);
+    check(nc_inq_type(id_, type, nullptr, &size), path_, attribute);
+    std::vector<unsigned char> bytes(length * size);
+    check(nc_get_att(id_, NC_GLOBAL, name, bytes.data()), path_, attribute);
+    verifyAttribute(attribute, bytes.data(), bytes.size());
+  }
+}
+
+void CheckpointReader::verifyAttribute(const std::string& name, const void* data,
+                                       std::size_t bytes) const {
+  if (version_ < 2)
+    return;  // written before the attributes had checksums
+  unsigned long long stored = 0;
+  nc_type type;
+  std::size_t length = 0;
+  const std::string sumName = checksumName(name);
+  if (nc_inq_att(id_, NC_GLOBAL, sumName.c_str(), &type, &length) != NC_NOERR ||
+      type != NC_UINT64 || length != 1 ||
+      nc_get_att_ulonglong(id_, NC_GLOBAL, sumName.c_str(), &stored) != NC_NOERR)
+    throw FileError(path_, "attribute '" + name + "' has no checksum");
+  if (stored != attributeHash(name, data, bytes))
+    throw FileError(path_, "attribute '" + name + "' is corrupted (its checksum differs)");
 }
 
 std::vector<double> CheckpointReader::numbers(const std::string& name) const {
@@ -256,6 +319,7 @@ std::vector<double> CheckpointReader::numbers(const std::string& name) const {
     throw FileError(path_, "has no attribute '" + name + "'");
   std::vector<double> values(length);
   check(nc_get_att_double(id_, NC_GLOBAL, name.c_str(), values.data()), path_, name);
+  verifyAttribute(name, values.data(), values.size() * sizeof(double));
   return values;
 }
 
@@ -266,6 +330,7 @@ std::vector<long long> CheckpointReader::integers(const std::string& name) const
     throw FileError(path_, "has no attribute '" + name + "'");
   std::vector<long long> values(length);
   check(nc_get_att_longlong(id_, NC_GLOBAL, name.c_str(), values.data()), path_, name);
+  verifyAttribute(name, values.data(), values.size() * sizeof(long long));
   return values;
 }
 

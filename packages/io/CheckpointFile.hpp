@@ -2,7 +2,9 @@
 // A checkpoint on disk: a netCDF file (the classic CDF-5 format) of named attributes and 2-D
 // variables (rows x columns of doubles or 64-bit integers), with a checksum per variable
 // (the sum over rows of a hash of the row's index and bytes, so that it can be checked
-// while the rows are read in pieces).
+// while the rows are read in pieces) and, from format version 2 on, one per attribute (a
+// hash of its name and bytes, in the attribute "<name>_checksum"): every byte a restart
+// reads is checked.
 // Serial: one process writes it, any number read it.  doc/design.md gives the layout.
 //
 // Writing goes to "<path>.tmp", which commit() renames to <path> after the data reached the
@@ -16,8 +18,9 @@
 
 namespace impm {
 
-// The version this code writes; it reads this one and older ones.
-constexpr int kCheckpointVersion = 1;
+// The version this code writes; it reads this one and older ones (version 1: the attributes
+// without checksums).
+constexpr int kCheckpointVersion = 2;
 
 class CheckpointWriter {
  public:
@@ -44,6 +47,8 @@ class CheckpointWriter {
   void endDefinitions();
   template <class T>
   void writeValues(const std::string& name, const std::vector<T>& values);
+  // The attribute's checksum beside it.
+  void attributeChecksum(const std::string& name, const void* data, std::size_t bytes);
   std::string path_, temporary_;
   int id_ = -1;
   bool defining_ = true;
@@ -84,6 +89,10 @@ class CheckpointReader {
                           bool checked) const;
   void account(const std::string& name, std::size_t first, std::size_t count, std::size_t rowBytes,
                const void* data) const;
+  // FileError naming the first attribute whose checksum differs (format version 2 on).
+  void verifyAllAttributes() const;
+  // FileError unless the attribute's checksum matches its bytes (format version 2 on).
+  void verifyAttribute(const std::string& name, const void* data, std::size_t bytes) const;
   struct Sum {
     std::uint64_t sum = 0;
     std::size_t rows = 0;

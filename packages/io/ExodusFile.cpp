@@ -163,13 +163,20 @@ void ExodusFile::create(const std::string& path, const std::string& title, const
   int cpuWordSize = sizeof(double), ioWordSize = sizeof(double);
   const int id = ex_create(path.c_str(), EX_CLOBBER, &cpuWordSize, &ioWordSize);
   check(id, path, "create", said);
-  OpenFile file{id};
-  check(ex_put_init(id, title.c_str(), mesh.dimension, static_cast<int64_t>(numNodes_),
-                    static_cast<int64_t>(numElements_), 1, 0, 0),
-        path, "init", said);
-  defineContents(id, mesh, {nodalVariables, elementVariables, globalVariables}, path, said);
-  writeMesh(id, mesh, path, said);
-  check(ex_close(file.release()), path, "close", said);
+  try {
+    OpenFile file{id};
+    check(ex_put_init(id, title.c_str(), mesh.dimension, static_cast<int64_t>(numNodes_),
+                      static_cast<int64_t>(numElements_), 1, 0, 0),
+          path, "init", said);
+    defineContents(id, mesh, {nodalVariables, elementVariables, globalVariables}, path, said);
+    writeMesh(id, mesh, path, said);
+    check(ex_close(file.release()), path, "close", said);
+  } catch (const FileError&) {
+    // A file half made (a full disk, ulimit -f) opens in no reader: it is not left behind.
+    std::error_code ignored;
+    std::filesystem::remove(path, ignored);
+    throw;
+  }
 }
 
 bool ExodusFile::copySteps(const std::string& from, int steps) const {

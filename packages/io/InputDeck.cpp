@@ -3,6 +3,7 @@
 #include <Teuchos_StringInputSource.hpp>
 #include <Teuchos_XMLParameterListHelpers.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -46,6 +47,35 @@ void checkNumbers(const Teuchos::XMLObject& list, const std::string& path) {
   }
 }
 
+// Deeper than this many ParameterLists, a deck is refused before Teuchos' reader recurses
+// through it (10^4 levels overflowed the stack).  impm's decks are three or four levels deep;
+// a Stratimikos or NOX list inside adds a few.
+constexpr int kMaxDeckDepth = 32;
+
+// The deepest nesting of <ParameterList> elements in the text (self-closed ones count as
+// one level, comments are skipped).
+int parameterListDepth(const std::string& xml) {
+  int depth = 0, deepest = 0;
+  for (std::size_t at = xml.find('<'); at != std::string::npos; at = xml.find('<', at + 1)) {
+    if (xml.compare(at, 4, "<!--") == 0) {
+      at = xml.find("-->", at);
+      if (at == std::string::npos)
+        break;
+      continue;
+    }
+    if (xml.compare(at, 15, "</ParameterList") == 0) {
+      --depth;
+    } else if (xml.compare(at, 14, "<ParameterList") == 0) {
+      const std::size_t end = xml.find('>', at);
+      const bool closed = end != std::string::npos && end > at && xml[end - 1] == '/';
+      deepest = std::max(deepest, depth + 1);
+      if (!closed)
+        ++depth;
+    }
+  }
+  return deepest;
+}
+
 Teuchos::ParameterList readXml(const std::string& file) {
   std::ifstream in(file);
   if (!in)
@@ -55,6 +85,10 @@ Teuchos::ParameterList readXml(const std::string& file) {
   const std::string xml = text.str();
   if (xml.find_first_not_of(" \t\r\n") == std::string::npos)
     throw InputError("", "the deck file is empty");
+  if (const int depth = parameterListDepth(xml); depth > kMaxDeckDepth)
+    throw InputError("", "the deck nests " + std::to_string(depth) + " ParameterLists; at most " +
+                             std::to_string(kMaxDeckDepth) +
+                             " are read (a deck is a few levels deep)");
   Teuchos::ParameterList deck;
   try {
     deck = *Teuchos::getParametersFromXmlString(xml);

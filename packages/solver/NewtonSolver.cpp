@@ -24,6 +24,7 @@
 #include "solver/LinearSolver.hpp"
 #include "solver/LinearTarget.hpp"
 #include "solver/ModelEvaluator.hpp"
+#include "solver/NoxChoices.hpp"
 #include "solver/RoundOffTest.hpp"
 
 namespace impm {
@@ -278,6 +279,7 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList& params,
     linearTolerance_ =
         p.sublist("Direction").sublist("Newton").sublist("Linear Solver").get<double>("Tolerance");
   });
+  checkNoxList(p, comm);
 }
 
 NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vector& x) const {

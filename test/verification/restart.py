@@ -355,7 +355,26 @@ def bad(args):
     other = glob.glob(os.path.join(other, "*_checkpoint_*.nc"))
     if r.returncode != 0 or not other:
         sys.exit("the other deck did not write a checkpoint:\n" + r.stdout + r.stderr)
-    cases = [
+    # One bit flipped in each attribute's value (the step, the time, the steppers' and the
+    # conditions' state, the run's identity): each has its checksum.
+    flipped = []
+    with netCDF4.Dataset(good) as d:
+        names = [n for n in d.ncattrs()
+                 if not n.endswith("_checksum") and n != "impm_checkpoint_version"]
+    for k, name in enumerate(names):
+        path = copy("flip%02d.nc" % k)
+        with netCDF4.Dataset(path, "a") as d:
+            value = d.getncattr(name)
+            if isinstance(value, str):
+                b = bytearray(value.encode())
+                b[len(b) // 2] ^= 0x04
+                d.setncattr(name, b.decode("latin-1"))
+            else:
+                a = numpy.array(value, ndmin=1).copy()
+                a.view(numpy.uint8)[a.nbytes // 2] ^= 0x01
+                d.setncattr(name, a)
+        flipped.append((path, [], "attribute '%s' is corrupted" % name))
+    cases = flipped + [
         (os.path.join(work, "missing.nc"), [], "no such checkpoint file"),
         (truncated, [], "is not a readable checkpoint"),
         (changed, [], "variable 'particle_x' is corrupted"),
