@@ -64,6 +64,23 @@ struct Arguments {
   impm::Verbosity verbosity = impm::Verbosity::normal;
 };
 
+// A message cut to a length a terminal and a log can hold: a user's value echoed in an
+// error (a 10^7-character --set) is kept by its start and its end.
+std::string shortened(const std::string& message) {
+  constexpr std::size_t kHead = 1500, kTail = 300;
+  if (message.size() <= kHead + kTail + 100)
+    return message;
+  return message.substr(0, kHead) + " ... (" + std::to_string(message.size() - kHead - kTail) +
+         " characters cut) ... " + message.substr(message.size() - kTail);
+}
+
+// An option's value; an empty one (--output-dir '') was ignored silently.
+std::string nonEmpty(const std::string& option, const std::string& value) {
+  if (value.empty())
+    throw impm::InputError("", option + " needs a value, got an empty one");
+  return value;
+}
+
 Arguments parse(int argc, char** argv) {
   Arguments a;
   for (int i = 1; i < argc; ++i) {
@@ -71,7 +88,7 @@ Arguments parse(int argc, char** argv) {
     auto value = [&](const std::string& option) {
       if (i + 1 >= argc)
         throw impm::InputError("", option + " needs a value");
-      return std::string(argv[++i]);
+      return nonEmpty(option, argv[++i]);
     };
     if (arg == "--list-parameters")
       a.list = true;
@@ -82,11 +99,11 @@ Arguments parse(int argc, char** argv) {
     else if (arg == "--output-dir")
       a.outputDirectory = value(arg);
     else if (arg.rfind("--output-dir=", 0) == 0)
-      a.outputDirectory = arg.substr(13);
+      a.outputDirectory = nonEmpty("--output-dir", arg.substr(13));
     else if (arg == "--restart")
       a.restart = value(arg);
     else if (arg.rfind("--restart=", 0) == 0)
-      a.restart = arg.substr(10);
+      a.restart = nonEmpty("--restart", arg.substr(10));
     else if (arg == "--set")
       a.overrides.push_back(impm::parseOverride(value(arg)));
     else if (arg.rfind("--set=", 0) == 0)
@@ -261,7 +278,7 @@ int main(int argc, char** argv) {
     args = parse(keptCount, keptArgs);
   } catch (const impm::InputError& e) {
     if (root)
-      std::cerr << "impm: error: " << e.what() << "\n" << kUsage;
+      std::cerr << "impm: error: " << shortened(e.what()) << "\n" << kUsage;
     return 2;
   }
   const auto valid = impm::deckValidParameters();
@@ -282,15 +299,15 @@ int main(int argc, char** argv) {
                            "has " + std::to_string(dim) + " entries; impm runs 1-D and 2-D grids");
   } catch (const impm::InputError& e) {
     if (root)
-      std::cerr << "impm: error: " << args.deck << ": " << e.what() << "\n";
+      std::cerr << "impm: error: " << args.deck << ": " << shortened(e.what()) << "\n";
     return 1;
   } catch (const impm::FileError& e) {
     if (root)
-      std::cerr << "impm: error: " << e.file() << ": " << e.what() << "\n";
+      std::cerr << "impm: error: " << e.file() << ": " << shortened(e.what()) << "\n";
     return 1;
   } catch (const impm::NumericalError& e) {
     if (root)
-      std::cerr << "impm: numerical failure: " << e.what() << "\n";
+      std::cerr << "impm: numerical failure: " << shortened(e.what()) << "\n";
     return 3;
   } catch (const impm::RunStopped& e) {
     if (root)
@@ -309,7 +326,8 @@ int main(int argc, char** argv) {
     return 1;
   } catch (const std::exception& e) {  // not foreseen: still one line, naming the deck
     if (root)
-      std::cerr << "impm: error: " << args.deck << ": " << impm::trilinosMessage(e.what()) << "\n";
+      std::cerr << "impm: error: " << args.deck << ": "
+                << shortened(impm::trilinosMessage(e.what())) << "\n";
     return 3;
   }
 }

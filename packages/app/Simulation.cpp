@@ -482,6 +482,16 @@ std::vector<std::string> Simulation<Dim>::run() {
     if (!c->reactionName().empty())
       supports.push_back(c->reactionName());
   History<Dim> history(bodies_->columnNames(), supports);
+  if (restored_ && stepper_->finished()) {
+    // Nothing to continue: the directory stays as the run that wrote the checkpoint left it
+    // (continuing the files would cut them back to the checkpoint's step).
+    if (comm_->getRank() == 0)
+      std::cout << "impm: the checkpoint is at the end of the run (step " << stepper_->state().step
+                << ", t = " << stepper_->state().time
+                << "): no step to take, nothing written; raise Time Integration/Final Time to "
+                   "continue it\n";
+    return {};
+  }
   if (!restored_)
     balanceAfterStep(0);  // the bodies may lie in some ranks' cells only
   // One writer per output directory, from its first file to the last (io/OutputLock.hpp).

@@ -513,6 +513,30 @@ bool findValidEntry(const ParameterList& valid, const ParameterList& user, const
   return findValidEntry(validSub, userSub, path.substr(slash + 1), found);
 }
 
+std::string newNamedEntry(const ParameterList& valid, const ParameterList& user,
+                          const std::string& path) {
+  if (isOpaque(valid))
+    return "";
+  const auto slash = path.find('/');
+  if (slash == std::string::npos)
+    return "";
+  const std::string head = path.substr(0, slash);
+  ParameterList userCopy(user);
+  const ParameterList effective = effectiveValidList(userCopy, valid, "");
+  const ParameterEntry* entry = effective.getEntryPtr(head);
+  if (!entry && effective.isSublist("<name>")) {
+    if (!user.isSublist(head))
+      return head;
+    entry = effective.getEntryPtr("<name>");
+  }
+  if (!entry || !entry->isList())
+    return "";
+  const ParameterList userSub = user.isSublist(head) ? user.sublist(head) : ParameterList();
+  const auto below =
+      newNamedEntry(Teuchos::getValue<ParameterList>(*entry), userSub, path.substr(slash + 1));
+  return below.empty() ? "" : head + "/" + below;
+}
+
 bool insideOpaqueList(const ParameterList& valid, const ParameterList& user,
                       const std::string& path) {
   if (isOpaque(valid))

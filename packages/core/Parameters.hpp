@@ -103,6 +103,12 @@ void validateParameters(Teuchos::ParameterList& user, const Teuchos::ParameterLi
 bool findValidEntry(const Teuchos::ParameterList& valid, const Teuchos::ParameterList& user,
                     const std::string& path, Teuchos::ParameterEntry& found);
 
+// The path of the named entry ("Materials/bar materail") that setting `path` would create
+// because the user list has no entry of that name where the valid list takes any name ("<name>":
+// a material, a body, a boundary condition); "" when it creates none.
+std::string newNamedEntry(const Teuchos::ParameterList& valid, const Teuchos::ParameterList& user,
+                          const std::string& path);
+
 // True when `path` lies inside an opaque sublist (a Stratimikos or NOX list), whose entries
 // have no declared type.
 bool insideOpaqueList(const Teuchos::ParameterList& valid, const Teuchos::ParameterList& user,

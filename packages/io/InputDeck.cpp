@@ -99,6 +99,23 @@ Teuchos::ParameterList readXml(const std::string& file) {
   return deck;
 }
 
+// "it has: a, b" for the entries beside `path`'s last one in the deck ("it has none").
+std::string namesBeside(const Teuchos::ParameterList& deck, const std::string& path) {
+  const Teuchos::ParameterList* list = &deck;
+  std::string rest = path;
+  for (auto slash = rest.find('/'); slash != std::string::npos; slash = rest.find('/')) {
+    if (!list->isSublist(rest.substr(0, slash)))
+      return "it has none";
+    list = &list->sublist(rest.substr(0, slash));
+    rest = rest.substr(slash + 1);
+  }
+  std::string names;
+  for (auto it = list->begin(); it != list->end(); ++it)
+    if (list->isSublist(list->name(it)))
+      names += (names.empty() ? "" : ", ") + list->name(it);
+  return names.empty() ? "it has none" : "it has: " + names;
+}
+
 void applyOverride(Teuchos::ParameterList& deck, const Override& o,
                    const Teuchos::ParameterList& valid) {
   const std::string where = "--set " + o.path;
@@ -109,6 +126,12 @@ void applyOverride(Teuchos::ParameterList& deck, const Override& o,
     entry = parseLike(prototype, o.value, o.path);
   else
     throw InputError(o.path, "unknown parameter (in " + where + ")");
+  if (const auto created = newNamedEntry(valid, deck, o.path); !created.empty())
+    throw InputError(o.path, "names no entry of the deck: " + created + " does not exist (" +
+                                 namesBeside(deck, created) +
+                                 "); a --set changes the deck's entries, it does not create "
+                                 "them (in " +
+                                 where + ")");
   Teuchos::ParameterList* list = &deck;
   std::string rest = o.path;
   for (auto slash = rest.find('/'); slash != std::string::npos; slash = rest.find('/')) {

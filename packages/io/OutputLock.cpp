@@ -64,8 +64,8 @@ OutputLock::OutputLock(const std::string& directory, const Comm& comm) : path_(p
     while (true) {
       fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
       if (fd_ < 0)
-        throw FileError(directory, std::string("cannot create the output directory's lock file (") +
-                                       std::strerror(errno) + ")");
+        throw FileError(path_, std::string("cannot create the output directory's lock file (") +
+                                   std::strerror(errno) + ")");
       if (flock(fd_, LOCK_EX | LOCK_NB) != 0) {
         const int why = errno;
         ::close(fd_);

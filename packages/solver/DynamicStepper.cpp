@@ -354,10 +354,19 @@ double DynamicStepper<Dim>::conservedKineticEnergy(const Vector& mass, const Vec
 }
 
 template <int Dim>
+bool DynamicStepper<Dim>::endsAt(double time) const {
+  return time >= settings_.finalTime - 1e-9 * settings_.timeStep;
+}
+
+template <int Dim>
+bool DynamicStepper<Dim>::finished() const {
+  return endsAt(this->accepted_.time);
+}
+
+template <int Dim>
 void DynamicStepper<Dim>::run(const StepCallback<Dim>& onStep) {
   auto& state = this->state_;
   const double T = settings_.finalTime;
-  const auto endsAt = [&](double time) { return time >= T - 1e-9 * settings_.timeStep; };
   while (!endsAt(state.time)) {
     // The last step ends at T, unless T is a whole step away up to round-off: then the
     // step keeps its size, so that stopping at T and extending the run later takes the

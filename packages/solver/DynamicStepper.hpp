@@ -55,6 +55,7 @@ class DynamicStepper : public Stepper<Dim> {
   // to the minimum.  Throws NumericalError (with the time) when that fails or a particle
   // leaves the grid.
   void run(const StepCallback<Dim>& onStep) override;
+  bool finished() const override;
   StepperState checkpointState() const override;
 
   // The explicit stability limit h / c, c the largest wave speed sqrt(E / rho).  Collective.
@@ -62,6 +63,8 @@ class DynamicStepper : public Stepper<Dim> {
                                const Materials<Dim>& materials, const Comm& comm);
 
  private:
+  // Whether a step ending at `time` reaches Final Time (up to round-off of the step).
+  bool endsAt(double time) const;
   // The integrator's acceleration a(du) = c0 du - (rv v^n + ra a^n) for a step of size dt.
   struct Acceleration {
     double c0, rv, ra;

@@ -99,6 +99,11 @@ StepperState QuasiStaticStepper<Dim>::checkpointState() const {
 }
 
 template <int Dim>
+bool QuasiStaticStepper<Dim>::finished() const {
+  return fullyLoaded(this->accepted_.loadFactor);
+}
+
+template <int Dim>
 void QuasiStaticStepper<Dim>::run(const StepCallback<Dim>& onStep) {
   auto& state = this->state_;
   while (!fullyLoaded(state.loadFactor)) {

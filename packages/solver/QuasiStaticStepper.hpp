@@ -31,6 +31,7 @@ class QuasiStaticStepper : public Stepper<Dim> {
   // after each accepted one.  Throws NumericalError when an increment fails at the smallest
   // size.
   void run(const StepCallback<Dim>& onStep) override;
+  bool finished() const override;
   // The accepted state with the predictor's increment per unit load factor (nodalDofs,
   // nodalU).
   StepperState checkpointState() const override;

@@ -30,6 +30,9 @@ class Stepper {
   // Runs the steps left (all, or those after a restored state); calls onStep after each
   // accepted one.  Throws NumericalError when a step fails at the smallest size.
   virtual void run(const StepCallback<Dim>& onStep) = 0;
+  // Whether the state holds no step to take (a restart from the end of a run, or from a
+  // time past the deck's Final Time).
+  virtual bool finished() const = 0;
 
   // The state carried between steps as it was when the last step was accepted (what a
   // checkpoint saves, also when the run stops in the middle of the next step: nothing of a

@@ -534,7 +534,7 @@ def non_finite_exodus(path):
 
 def fails(args):
     out = os.path.join(tempfile.mkdtemp(prefix="impm-bad-", dir="."), "out")
-    r = run_impm(args, args.deck, out, args.set, args.np)
+    r = run_impm(args, args.deck, out, args.set, args.np, args.option)
     sys.stdout.write(r.stdout)
     sys.stdout.write(r.stderr)
     problems = []
@@ -818,6 +818,8 @@ def main():
     f.add_argument("--set", action="append", default=[])
     f.add_argument("--outputs-remain", action="store_true",
                    help="a numerical failure: the outputs of the steps done must remain readable")
+    f.add_argument("--option", action="append", default=[],
+                   help="a command-line option for impm (after --output-dir)")
     f.add_argument("--steps-done", type=int, default=1,
                    help="with --outputs-remain: the steps done before the failure, at least")
     f.add_argument("--same-error-with", action="append", default=[],

@@ -405,6 +405,42 @@ def bad(args):
     sys.exit(1 if failures else 0)
 
 
+def finished(args):
+    """A restart with no step to take (from the last checkpoint of a finished run, or with a
+    Final Time below the checkpoint's) says so, exits 0 and leaves the directory as it was:
+    the history not cut back, no file claimed that it did not write."""
+    work = os.path.abspath(tempfile.mkdtemp(prefix="impm-finished-", dir="."))
+    out = os.path.join(work, "out")
+    run(args, 1, out, checkpoint_sets(args.every))
+    checkpoints = sorted(glob.glob(os.path.join(out, "%s_checkpoint_*.nc" % stem(args.deck))))
+    history = os.path.join(out, stem(args.deck) + "_history.csv")
+    particles = os.path.join(out, stem(args.deck) + "_particles.csv")
+    with open(history) as f:
+        before = f.read()
+    os.remove(particles)  # so that a claim to have written it shows
+    failures = []
+    for sets in ([], ["Time Integration/Final Time=%s" % args.earlier]):
+        r = subprocess.run(command(args, 1, out, args.deck, sets, checkpoints[-1]),
+                           capture_output=True, text=True)
+        with open(history) as f:
+            after = f.read()
+        said = r.stdout + r.stderr
+        problems = []
+        if r.returncode != 0:
+            problems.append("exit %d" % r.returncode)
+        if "no step to take, nothing written" not in said:
+            problems.append("no word that there is nothing to do")
+        if "impm: wrote" in said or os.path.exists(particles):
+            problems.append("claims or writes files")
+        if after != before:
+            problems.append("the history changed")
+        print("%-4s restart %s: %s" % ("FAIL" if problems else "ok", sets or "as written",
+                                       ", ".join(problems) or said.strip().splitlines()[-1]))
+        failures += problems
+    shutil.rmtree(work)
+    sys.exit(1 if failures else 0)
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__,
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -435,6 +471,11 @@ def main():
     t.add_argument("--signal", choices=["TERM", "INT", "USR1"], default="TERM")
     t.add_argument("--seed", type=int, default=1)
     t.add_argument("--set", action="append", default=[])
+    f = sub.add_parser("finished")
+    f.add_argument("--deck", required=True)
+    f.add_argument("--every", type=int, default=100)
+    f.add_argument("--earlier", required=True, help="a Final Time before the run's end")
+    f.add_argument("--set", action="append", default=[])
     b = sub.add_parser("bad")
     b.add_argument("--deck", required=True)
     b.add_argument("--every", type=int, default=2)
@@ -446,7 +487,8 @@ def main():
     args = p.parse_args()
     if args.check == "split" and not (args.from_step or args.stop):
         sys.exit("split needs --from-step or --stop")
-    {"split": split, "crash": crash, "stop": stop, "bad": bad}[args.check](args)
+    {"split": split, "crash": crash, "stop": stop, "bad": bad,
+     "finished": finished}[args.check](args)
 
 
 if __name__ == "__main__":
