@@ -34,8 +34,8 @@
 namespace {
 
 const char* kUsage =
-    "usage: impm [--output-dir DIR] [--restart CHECKPOINT] [--set Path/To/Param=value]...\n"
-    "            [--verbose | --quiet] deck.xml\n"
+    "usage: impm [--output-dir DIR] [--restart CHECKPOINT [--allow-physics-change]]\n"
+    "            [--set Path/To/Param=value]... [--verbose | --quiet] deck.xml\n"
     "       impm --list-parameters\n"
     "       impm --help\n"
     "\n"
@@ -43,6 +43,9 @@ const char* kUsage =
     "  --output-dir DIR   write the outputs to DIR (default: the deck's Output/Directory)\n"
     "  --restart FILE     continue the run from a checkpoint FILE the same deck wrote\n"
     "                     (Output/Checkpoint Every); run controls may change with --set\n"
+    "                     (Output, Solver, Verification, Load Balance, Final Time)\n"
+    "  --allow-physics-change  a restart may also change what defines the problem (a\n"
+    "                     modulus, a boundary value, the time step); each change is printed\n"
     "  --set P=V          override parameter P (a path such as Grid/Cells) with value V,\n"
     "                     typed like P; arrays in Teuchos syntax: --set Grid/Cells={64}\n"
     "  --verbose          print every step and every Newton iteration\n"
@@ -61,6 +64,7 @@ struct Arguments {
   std::string deck, outputDirectory, restart;
   std::vector<impm::Override> overrides;
   bool list = false;
+  bool allowPhysicsChange = false;
   impm::Verbosity verbosity = impm::Verbosity::normal;
 };
 
@@ -96,6 +100,8 @@ Arguments parse(int argc, char** argv) {
       a.verbosity = impm::Verbosity::verbose;
     else if (arg == "--quiet")
       a.verbosity = impm::Verbosity::quiet;
+    else if (arg == "--allow-physics-change")
+      a.allowPhysicsChange = true;
     else if (arg == "--output-dir")
       a.outputDirectory = value(arg);
     else if (arg.rfind("--output-dir=", 0) == 0)
@@ -149,7 +155,7 @@ template <int Dim>
 int runDeck(const Teuchos::ParameterList& deck, const Arguments& args,
             const Teuchos::RCP<const impm::Comm>& comm) {
   impm::Simulation<Dim> simulation(deck, args.deck, args.outputDirectory, comm, args.restart,
-                                   args.verbosity);
+                                   args.verbosity, args.allowPhysicsChange);
   const auto failures = simulation.run();
   if (failures.empty())
     return 0;

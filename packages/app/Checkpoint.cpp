@@ -4,9 +4,13 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cstring>
 #include <filesystem>
 #include <iomanip>
+#include <iostream>
+#include <map>
+#include <set>
 #include <sstream>
 
 #include "core/Collective.hpp"
@@ -52,6 +56,95 @@ std::string listed(const std::vector<T>& v) {
   return s.str() + "}";
 }
 
+// The parameters a restart may change: how the run is solved, written, checked and shared,
+// and how far it goes.
+bool isRunControl(const std::string& path) {
+  for (const char* list : {"Output/", "Solver/", "Verification/", "Load Balance/"})
+    if (path.rfind(list, 0) == 0)
+      return true;
+  return path == "Time Integration/Final Time";
+}
+
+// The shortest text that reads back as the same double (2e6 as "2000000", 0.3 as "0.3").
+std::string shortest(double v) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, v).ptr;
+  return std::string(text, end);
+}
+
+// A parameter's value as text that tells any two values apart.
+std::string exactText(const Teuchos::ParameterEntry& entry) {
+  if (entry.isType<double>())
+    return shortest(Teuchos::getValue<double>(entry));
+  if (entry.isType<Teuchos::Array<double>>()) {
+    std::string text = "{";
+    for (double v : Teuchos::getValue<Teuchos::Array<double>>(entry))
+      text += (text.size() > 1 ? ", " : "") + shortest(v);
+    return text + "}";
+  }
+  std::ostringstream value;
+  entry.getAny(false).print(value);
+  return value.str();
+}
+
+void physicsLines(const Teuchos::ParameterList& list, const std::string& prefix,
+                  std::vector<std::string>& lines) {
+  for (auto it = list.begin(); it != list.end(); ++it) {
+    const std::string path = prefix + list.name(it);
+    const auto& entry = list.entry(it);
+    if (entry.isList()) {
+      physicsLines(Teuchos::getValue<Teuchos::ParameterList>(entry), path + "/", lines);
+    } else if (!isRunControl(path)) {
+      lines.push_back(path + " = " + exactText(entry));
+    }
+  }
+}
+
+// path -> value of RunIdentity::physics lines.
+std::map<std::string, std::string> physicsByPath(const std::string& text) {
+  std::map<std::string, std::string> byPath;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    const auto at = line.find(" = ");
+    if (at != std::string::npos)
+      byPath[line.substr(0, at)] = line.substr(at + 3);
+  }
+  return byPath;
+}
+
+// "path: theirs -> ours" for every parameter that defines the problem and differs.
+std::vector<std::string> physicsChanges(const std::string& theirs, const std::string& ours) {
+  const auto before = physicsByPath(theirs), now = physicsByPath(ours);
+  std::vector<std::string> changes;
+  const auto shown = [](const std::map<std::string, std::string>& m, const std::string& path) {
+    const auto it = m.find(path);
+    return it == m.end() ? std::string("(not set)") : it->second;
+  };
+  std::set<std::string> paths;
+  for (const auto& [path, value] : before)
+    paths.insert(path);
+  for (const auto& [path, value] : now)
+    paths.insert(path);
+  for (const auto& path : paths)
+    if (shown(before, path) != shown(now, path))
+      changes.push_back(path + ": " + shown(before, path) + " -> " + shown(now, path));
+  return changes;
+}
+
+}  // namespace
+
+std::string physicsParameters(const Teuchos::ParameterList& deck) {
+  std::vector<std::string> lines;
+  physicsLines(deck, "", lines);
+  std::sort(lines.begin(), lines.end());
+  std::string text;
+  for (const auto& line : lines)
+    text += line + "\n";
+  return text;
+}
+
+namespace {
+
 void writeIdentity(CheckpointWriter& file, const RunIdentity& id) {
   file.attribute("grid_cells", id.cells);
   file.attribute("grid_origin", id.origin);
@@ -63,6 +156,7 @@ void writeIdentity(CheckpointWriter& file, const RunIdentity& id) {
   file.attribute("bodies", id.bodies);
   file.attribute("particles", std::vector<long long>{id.particles});
   file.attribute("fingerprint", std::vector<long long>{id.fingerprint});
+  file.attribute("physics", id.physics);
 }
 
 // The first difference between the checkpoint's problem and this deck's, or "".
@@ -137,6 +231,7 @@ RunIdentity runIdentity(const Teuchos::ParameterList& deck, const GridGeometry<D
   }
   Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
   id.fingerprint = static_cast<long long>(global);
+  id.physics = physicsParameters(deck);
   return id;
 }
 
@@ -312,6 +407,36 @@ void readParticleField(const CheckpointReader& file, const std::string& name, st
 
 }  // namespace
 
+namespace {
+
+// A checkpoint written with other values of the parameters that define the problem (a
+// modulus, a boundary value, the time step) continued silently into a run that matched
+// neither: refused, unless allowed, and then each change is printed.
+void requireSamePhysics(const CheckpointReader& file, const RunIdentity& identity,
+                        const Comm& comm) {
+  if (!file.hasAttribute("physics"))
+    return;  // written before the checkpoints recorded it
+  const auto changes = physicsChanges(file.text("physics"), identity.physics);
+  if (changes.empty())
+    return;
+  if (!identity.allowPhysicsChange) {
+    std::string listedChanges;
+    for (const auto& c : changes)
+      listedChanges += (listedChanges.empty() ? "" : "; ") + c;
+    throw FileError(file.path(),
+                    "was written with other values of parameters that define the problem (" +
+                        listedChanges +
+                        "); a restart may change only Output, Solver, Verification, Load Balance "
+                        "and Time Integration/Final Time, or add --allow-physics-change to go on "
+                        "with this deck's values");
+  }
+  if (comm.getRank() == 0)
+    for (const auto& c : changes)
+      std::cout << "impm: note: the restart changes " << c << " (--allow-physics-change)\n";
+}
+
+}  // namespace
+
 template <int Dim>
 RunState<Dim> readCheckpoint(const std::string& path, const RunIdentity& identity,
                              const Decomposition<Dim>& decomposition, bool byReference,
@@ -323,6 +448,7 @@ RunState<Dim> readCheckpoint(const std::string& path, const RunIdentity& identit
     const std::string difference = identityDifference(file, identity);
     if (!difference.empty())
       throw FileError(path, difference);
+    requireSamePhysics(file, identity, *comm);
     readStepperState(file, state);
     // Each rank keeps the particles in its cells, in id order.
     const auto total = static_cast<std::size_t>(identity.particles);

@@ -31,7 +31,17 @@ struct RunIdentity {
   std::string method, kinematics, timeIntegration, materials, bodies;
   long long particles = 0;
   long long fingerprint = 0;
+  // The deck's parameters that define the problem, "path = value" a line, sorted: all but the
+  // run controls a restart may change (physicsParameters()).
+  std::string physics;
+  // Whether a restart may continue with other physics than its checkpoint's (each change is
+  // printed); not written.
+  bool allowPhysicsChange = false;
 };
+
+// The lines of RunIdentity::physics for `deck`: every parameter but Output/..., Solver/...,
+// Verification/..., Load Balance/... and Time Integration/Final Time.
+std::string physicsParameters(const Teuchos::ParameterList& deck);
 
 // The identity of `deck` with its grid and its particles as created.  Collective.
 template <int Dim>

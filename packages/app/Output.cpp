@@ -1,6 +1,10 @@
 #include "app/Output.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 
@@ -214,6 +218,7 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
   if (error)
     throw FileError(directory, "cannot create the output directory (" + error.message() + ")");
   const std::string base = directory + "/" + prefix;
+  requireWritable(plannedFiles(base));
   history_ = std::make_unique<CsvHistory>(base + "_history.csv", historyColumns,
                                           resume ? resume->step : -1);
   std::vector<std::string> restarted;  // files that could not be continued
@@ -445,6 +450,34 @@ void Output<Dim>::appendHistory(const std::vector<double>& row) const {
     if (root_)
       history_->append(row);
   });
+}
+
+template <int Dim>
+std::vector<std::string> Output<Dim>::plannedFiles(const std::string& base) const {
+  std::vector<std::string> out = {base + "_history.csv", base + "_verification.csv"};
+  if (csv_)
+    out.push_back(base + "_particles.csv");
+  if (exodus_) {
+    out.push_back(base + "_grid.exo"), out.push_back(base + "_particles.exo");
+    if (domains_ != Domains::none)
+      out.push_back(base + "_domains.exo");
+  }
+  return out;
+}
+
+template <int Dim>
+void Output<Dim>::requireWritable(const std::vector<std::string>& paths) {
+  // A run that failed on its third file had already reset the first two: every file a
+  // previous run left is tried for writing before any is touched.
+  for (const auto& path : paths) {
+    if (!std::filesystem::exists(path))
+      continue;
+    const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+    if (fd < 0)
+      throw FileError(path, std::string("cannot be written, so no output was changed (") +
+                                std::strerror(errno) + ")");
+    ::close(fd);
+  }
 }
 
 template <int Dim>

@@ -109,6 +109,10 @@ class Output {
   int exodusSteps() const { return exodusSteps_; }
 
  private:
+  // The files a fresh start writes under base (directory/prefix).
+  std::vector<std::string> plannedFiles(const std::string& base) const;
+  // FileError naming the first of `paths` that exists and cannot be opened for writing.
+  static void requireWritable(const std::vector<std::string>& paths);
   // Where the gathered rows go: every row on rank 0 for the Exodus files, which then writes
   // the CSV from them too (one gather per write, where the CSV's blocks of ids on every rank
   // took a second one and their formatting in parallel did not pay for it,

@@ -74,7 +74,7 @@ template <int Dim>
 Simulation<Dim>::Simulation(const Teuchos::ParameterList& deck, const std::string& deckFile,
                             const std::string& outputDirectory,
                             const Teuchos::RCP<const Comm>& comm, const std::string& restartFile,
-                            Verbosity verbosity)
+                            Verbosity verbosity, bool allowPhysicsChange)
     : comm_(comm),
       deck_(deck),
       deckFile_(deckFile),
@@ -94,6 +94,7 @@ Simulation<Dim>::Simulation(const Teuchos::ParameterList& deck, const std::strin
   const GlobalId local = particles_.size();
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, local, Teuchos::outArg(totalParticles_));
   identity_ = runIdentity<Dim>(deck_, ownership_->grid(), particles_, totalParticles_, *comm_);
+  identity_.allowPhysicsChange = allowPhysicsChange;
   const auto& ti = deck_.sublist("Time Integration");
   gridFields_ = std::make_unique<GridFields<Dim>>(
       *ownership_, isStatic(ti) || kinematics_ == Kinematics::totalLagrangian, !isStatic(ti));

@@ -31,9 +31,12 @@ class Simulation {
  public:
   // Collective; throws InputError (on every rank) when the deck is inconsistent.  With a
   // checkpoint file the run continues from it; FileError when it cannot.
+  // `allowPhysicsChange`: a restart may go on with other values of the parameters that define
+  // the problem than its checkpoint's (app/Checkpoint.hpp).
   Simulation(const Teuchos::ParameterList& deck, const std::string& deckFile,
              const std::string& outputDirectory, const Teuchos::RCP<const Comm>& comm,
-             const std::string& restart = "", Verbosity verbosity = Verbosity::normal);
+             const std::string& restart = "", Verbosity verbosity = Verbosity::normal,
+             bool allowPhysicsChange = false);
   ~Simulation();
 
   // Runs to the end; returns the failed verification checks (empty: all passed).  Throws

@@ -256,6 +256,12 @@ bool CheckpointReader::has(const std::string& name) const {
   return nc_inq_varid(id_, name.c_str(), &var) == NC_NOERR;
 }
 
+bool CheckpointReader::hasAttribute(const std::string& name) const {
+  nc_type type;
+  std::size_t length = 0;
+  return nc_inq_att(id_, NC_GLOBAL, name.c_str(), &type, &length) == NC_NOERR;
+}
+
 int CheckpointReader::variable(const std::string& name) const {
   int var = 0;
   if (nc_inq_varid(id_, name.c_str(), &var) != NC_NOERR)
@@ -283,8 +289,8 @@ void CheckpointReader::verifyAllAttributes() const {
     char name[NC_MAX_NAME + 1] = "";
     nc_inq_attname(id_, NC_GLOBAL, k, name);
     const std::string attribute = name;
-    if (attribute == kVersion || (attribute.size() > 9 && attribute.compare(attribute.size() - 9,
-                                                                            9, "_checksum") == 0))
+    if (attribute == kVersion ||
+        (attribute.size() > 9 && attribute.compare(attribute.size() - 9, 9, "_checksum") == 0))
       continue;
     nc_type type;
     std::size_t length = 0, size = 0;

@@ -65,6 +65,7 @@ class CheckpointReader {
   const std::string& path() const { return path_; }
   int version() const { return version_; }
   bool has(const std::string& variable) const;
+  bool hasAttribute(const std::string& attribute) const;
   std::string text(const std::string& attribute) const;
   std::vector<double> numbers(const std::string& attribute) const;
   std::vector<long long> integers(const std::string& attribute) const;

@@ -168,6 +168,42 @@ def readonly(args):
     finish(problems)
 
 
+def readonly_file(args):
+    """A new run in the directory of a finished one, one of whose files may not be written:
+    refused naming that file, and every file of the finished run stays as it was (the Exodus
+    files, the history and the CSVs; a run used to reset the first files before failing on
+    the third)."""
+    work = os.path.abspath(tempfile.mkdtemp(prefix="impm-readonly-file-", dir="."))
+    out = os.path.join(work, "out")
+    os.makedirs(out)
+    cmd = impm_command(args, out, [])
+    if os.geteuid() == 0:  # root may write anywhere: run as nobody, who owns the directory
+        nobody = pwd.getpwnam("nobody")
+        os.chmod(work, 0o755)
+        os.chown(out, nobody.pw_uid, nobody.pw_gid)
+        cmd = ["setpriv", "--reuid=%d" % nobody.pw_uid, "--regid=%d" % nobody.pw_gid,
+               "--clear-groups"] + cmd
+    first = subprocess.run(cmd, capture_output=True, text=True, cwd=work)
+    problems = [] if first.returncode == 0 else ["the first run failed: " + first.stderr[-300:]]
+    stem = os.path.splitext(os.path.basename(args.deck))[0]
+    locked = os.path.join(out, stem + "_particles.exo")
+    before = {}
+    for name in sorted(os.listdir(out)):
+        with open(os.path.join(out, name), "rb") as f:
+            before[name] = f.read()
+    os.chmod(locked, 0o444)
+    r = subprocess.run(cmd, capture_output=True, text=True, cwd=work)
+    problems += judge_failure(r, locked, "cannot be written, so no output was changed "
+                              "(Permission denied)", out)
+    for name, data in before.items():
+        with open(os.path.join(out, name), "rb") as f:
+            if f.read() != data:
+                problems.append("the second run changed " + name)
+    os.chmod(locked, 0o644)
+    shutil.rmtree(work)
+    finish(problems)
+
+
 def vanished(args):
     work = os.path.abspath(tempfile.mkdtemp(prefix="impm-vanished-", dir="."))
     out = os.path.join(work, "out")
@@ -211,10 +247,12 @@ def main():
     l.add_argument("file", choices=sorted(DECK_SETS))
     sub.add_parser("readonly")
     sub.add_parser("vanished")
+    sub.add_parser("readonly-file")
     args = p.parse_args()
     args.impm = os.path.abspath(args.impm)
     args.deck = os.path.abspath(args.deck)
-    {"limit": limit, "readonly": readonly, "vanished": vanished}[args.case](args)
+    {"limit": limit, "readonly": readonly, "vanished": vanished,
+     "readonly-file": readonly_file}[args.case](args)
 
 
 if __name__ == "__main__":

@@ -382,6 +382,10 @@ def bad(args):
         (args.deck, [], "is not a readable checkpoint"),
         (more, [], "its particle count is"),
         (good, ["Discretization/Method=" + args.other_method], "its method is"),
+        # Other physics, refused with every change listed (it was continued silently).
+        (good, ["Materials/column/E=2e6", "Time Integration/Load Steps=7"],
+         "was written with other values of parameters that define the problem "
+         "(Materials/column/E: 1e+06 -> 2e+06; Time Integration/Load Steps: "),
         (other[0], [], "its dimension is"),
     ]
     failures = []
@@ -399,6 +403,15 @@ def bad(args):
                 os.path.basename(checkpoint), r.returncode, len(lines),
                 "written" if os.path.exists(out) else "none", r.stderr.strip()[:300]))
         shutil.rmtree(out, ignore_errors=True)
+    # ... and continued with --allow-physics-change, each change printed.
+    out = os.path.join(work, "allowed")
+    r = subprocess.run(command(args, 1, out, args.deck, ["Materials/column/E=2e6"], good)
+                       + ["--allow-physics-change"], capture_output=True, text=True)
+    note = "impm: note: the restart changes Materials/column/E: 1e+06 -> 2e+06"
+    ok = r.returncode == 0 and note in r.stdout
+    print("%-4s %s" % ("ok" if ok else "FAIL", note if ok else r.stdout[-300:] + r.stderr))
+    if not ok:
+        failures.append("--allow-physics-change: exit %d" % r.returncode)
     shutil.rmtree(work)
     for f in failures:
         print("FAIL:", f)
