@@ -95,7 +95,9 @@ void forEachEndNode(const ContributionContext<2>& ctx, const double at[2], Globa
           std::ostringstream msg;
           msg << "Boundary Conditions/" << name << ": a loaded face of particle " << particle
               << " reaches grid node " << nodeId
-              << ", which no integration point reaches (use gimp or cpdi)";
+              << ", which no integration point reaches (classic mpm's points: use gimp or "
+                 "cpdi; gimp's boxes on a mesh body, which do not tile it: use cpdi, whose "
+                 "domains are the elements)";
           throw NumericalError(msg.str());
         }
         f(lid, a, N);
