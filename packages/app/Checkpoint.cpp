@@ -411,14 +411,14 @@ namespace {
 
 // A checkpoint written with other values of the parameters that define the problem (a
 // modulus, a boundary value, the time step) continued silently into a run that matched
-// neither: refused, unless allowed, and then each change is printed.
-void requireSamePhysics(const CheckpointReader& file, const RunIdentity& identity,
-                        const Comm& comm) {
+// neither: refused, unless allowed, and then each change is printed and returned.
+std::vector<std::string> requireSamePhysics(const CheckpointReader& file,
+                                            const RunIdentity& identity, const Comm& comm) {
   if (!file.hasAttribute("physics"))
-    return;  // written before the checkpoints recorded it
-  const auto changes = physicsChanges(file.text("physics"), identity.physics);
+    return {};  // written before the checkpoints recorded it
+  auto changes = physicsChanges(file.text("physics"), identity.physics);
   if (changes.empty())
-    return;
+    return changes;
   if (!identity.allowPhysicsChange) {
     std::string listedChanges;
     for (const auto& c : changes)
@@ -433,6 +433,7 @@ void requireSamePhysics(const CheckpointReader& file, const RunIdentity& identit
   if (comm.getRank() == 0)
     for (const auto& c : changes)
       std::cout << "impm: note: the restart changes " << c << " (--allow-physics-change)\n";
+  return changes;
 }
 
 }  // namespace
@@ -448,7 +449,7 @@ RunState<Dim> readCheckpoint(const std::string& path, const RunIdentity& identit
     const std::string difference = identityDifference(file, identity);
     if (!difference.empty())
       throw FileError(path, difference);
-    requireSamePhysics(file, identity, *comm);
+    state.physicsChanges = requireSamePhysics(file, identity, *comm);
     readStepperState(file, state);
     // Each rank keeps the particles in its cells, in id order.
     const auto total = static_cast<std::size_t>(identity.particles);

@@ -68,6 +68,7 @@ struct RunState {
   std::vector<std::vector<double>> contributions;  // each contribution's state()
   int exodusSteps = 0;                             // time steps in the Exodus files
   Partition partition;                             // the ranks' cells (app/LoadBalance)
+  std::vector<std::string> physicsChanges;         // read only: "Path: old -> new", allowed changes
 };
 
 // Writes `path` atomically.  Collective (rank 0 writes; the fields are gathered to it).

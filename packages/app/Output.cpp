@@ -18,7 +18,8 @@ Teuchos::ParameterList outputValidParameters() {
   Teuchos::ParameterList valid;
   declareString(valid, "Directory", "output",
                 "Directory for the output files, created if missing (--output-dir overrides)");
-  declareString(valid, "Prefix", "", "File name prefix (empty: the deck file's name)");
+  declareString(valid, "Prefix", "",
+                "File name prefix, without a '/' (empty: the deck file's name)");
   declareInt(valid, "Every", 1, "Write the fields every this many steps (and at the last step)",
              Bounds::atLeast(1));
   declareInt(valid, "History Every", 1,
@@ -220,7 +221,8 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
   const std::string base = directory + "/" + prefix;
   requireWritable(plannedFiles(base));
   history_ = std::make_unique<CsvHistory>(base + "_history.csv", historyColumns,
-                                          resume ? resume->step : -1);
+                                          resume ? resume->step : -1,
+                                          resume ? resume->notes : std::vector<std::string>{});
   std::vector<std::string> restarted;  // files that could not be continued
   if (resume && !history_->continued())
     restarted.push_back(history_->path());

@@ -71,6 +71,7 @@ ParticleTable gatherParticles(const ParticleSet<Dim>& particles,
 struct OutputResume {
   int step = 0;
   int exodusSteps = 0;
+  std::vector<std::string> notes;  // lines for the history at the restart (CsvHistory)
 };
 
 template <int Dim>

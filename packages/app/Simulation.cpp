@@ -128,6 +128,12 @@ void Simulation<Dim>::setUp(const Teuchos::ParameterList& deck) {
   const auto& output = deck.sublist("Output");
   prefix_ = output.get<std::string>("Prefix").empty() ? deckStem(deckFile_)
                                                       : output.get<std::string>("Prefix");
+  // A path in the prefix put files outside the locked output directory ("../x") or in a
+  // directory that the checkpoint series did not scan (Checkpoints Kept was not applied).
+  if (prefix_.find('/') != std::string::npos || prefix_ == "." || prefix_ == "..")
+    throw InputError("Output/Prefix", "'" + prefix_ +
+                                          "' is a path; the prefix is a file name (the "
+                                          "directory is Output/Directory or --output-dir)");
   if (outputDirectory_.empty())
     outputDirectory_ = output.get<std::string>("Directory");
   const auto grid = readGrid<Dim>(deck.sublist("Grid"));
@@ -240,7 +246,7 @@ template <int Dim>
 void Simulation<Dim>::writeCheckpoint(CheckpointSeries& series, int step, Stepper<Dim>& stepper,
                                       const Output<Dim>& output) const {
   IMPM_TIMER("checkpoint");
-  RunState<Dim> state{stepper.checkpointState(), {}, output.exodusSteps(), {}};
+  RunState<Dim> state{stepper.checkpointState(), {}, output.exodusSteps(), {}, {}};
   state.partition = {comm_->getSize(), ownership_->decomposition().cellOwners(),
                      loadBalance_->imbalanceAfterRepartition()};
   for (const auto& c : conditions_)
@@ -390,8 +396,12 @@ std::unique_ptr<Output<Dim>> Simulation<Dim>::startOutput(const History<Dim>& hi
                           : method_ == Method::gimp     ? Domains::box
                                                         : Domains::none;
   particles_.bringUpToDate();
-  const OutputResume resume{restored_ ? restored_->stepper.step : 0,
-                            restored_ ? restored_->exodusSteps : 0};
+  OutputResume resume{
+      restored_ ? restored_->stepper.step : 0, restored_ ? restored_->exodusSteps : 0, {}};
+  if (restored_)  // the changes --allow-physics-change let through, where the rows change
+    for (const auto& change : restored_->physicsChanges)
+      resume.notes.push_back("restart at step " + std::to_string(resume.step) + " changes " +
+                             change + " (--allow-physics-change)");
   std::unique_ptr<Output<Dim>> output;
   collectively(*comm_, [&] {
     output = std::make_unique<Output<Dim>>(

@@ -10,6 +10,7 @@
 
 #include "core/CapturedOutput.hpp"
 #include "core/Errors.hpp"
+#include "io/InputFile.hpp"
 
 namespace impm {
 
@@ -198,9 +199,8 @@ void CheckpointWriter::commit() {
 }
 
 CheckpointReader::CheckpointReader(const std::string& path) : path_(path) {
-  if (!std::filesystem::is_regular_file(path))
-    throw FileError(path,
-                    std::filesystem::exists(path) ? "is not a file" : "no such checkpoint file");
+  if (const std::string why = notAnInputFile(path, "no such checkpoint file"); !why.empty())
+    throw FileError(path, why);
   const int status = nc_open(path.c_str(), NC_NOWRITE, &id_);
   if (status != NC_NOERR) {
     id_ = -1;

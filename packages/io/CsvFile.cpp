@@ -149,7 +149,7 @@ std::string formatCsvRows(const std::vector<std::vector<double>>& values) {
 }
 
 CsvHistory::CsvHistory(const std::string& path, const std::vector<std::string>& columns,
-                       int keepThrough)
+                       int keepThrough, const std::vector<std::string>& notes)
     : path_(path), columns_(columns) {
   std::string text = header(columns);
   if (keepThrough >= 0) {
@@ -158,6 +158,10 @@ CsvHistory::CsvHistory(const std::string& path, const std::vector<std::string>& 
     if (in && std::getline(in, line) && line + "\n" == text) {
       continued_ = true;
       while (std::getline(in, line)) {
+        if (line.rfind("# ", 0) == 0) {  // an earlier restart's note
+          text += line + "\n";
+          continue;
+        }
         char* end = nullptr;
         const double step = std::strtod(line.c_str(), &end);
         if (end == line.c_str() || *end != ',' || step > keepThrough)
@@ -165,6 +169,10 @@ CsvHistory::CsvHistory(const std::string& path, const std::vector<std::string>& 
         text += line + "\n";
       }
     }
+  }
+  for (std::string note : notes) {
+    std::replace(note.begin(), note.end(), '\n', ' ');  // one line each
+    text += "# " + note + "\n";
   }
   // Replaced in one rename, so a crash leaves the old file or the new one.
   try {

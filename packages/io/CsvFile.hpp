@@ -14,9 +14,12 @@ class CsvHistory {
  public:
   // Creates (truncates) the file and writes the header.  With keepThrough >= 0 (a restart)
   // an existing file with the same header keeps its rows whose first column (the step) is at
-  // most keepThrough, and is continued (continued() says whether it was).
-  CsvHistory(const std::string& path, const std::vector<std::string>& columns,
-             int keepThrough = -1);
+  // most keepThrough, and the comment lines among them, and is continued (continued() says
+  // whether it was).  Each note is then written as a comment line, "# note", where the new
+  // rows begin: the file records what a restart changed at the step it changed it (csv
+  // readers skip such lines with comment='#').
+  CsvHistory(const std::string& path, const std::vector<std::string>& columns, int keepThrough = -1,
+             const std::vector<std::string>& notes = {});
   void append(const std::vector<double>& row) const;
   const std::vector<std::string>& columns() const { return columns_; }
   const std::string& path() const { return path_; }

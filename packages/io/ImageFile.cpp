@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "core/Errors.hpp"
+#include "io/InputFile.hpp"
 
 namespace impm {
 
@@ -117,6 +118,14 @@ GrayImage readTiff(const std::string& path) {
                               " samples per pixel); impm reads grayscale images");
   if (bits != 8 && bits != 16)
     throw FileError(path, "has " + std::to_string(bits) + " bits per sample; impm reads 8 and 16");
+  uint16_t format = SAMPLEFORMAT_UINT;  // signed or float samples read as unsigned were wrong
+  TIFFGetFieldDefaulted(tiff.get(), TIFFTAG_SAMPLEFORMAT, &format);
+  if (format != SAMPLEFORMAT_UINT && format != SAMPLEFORMAT_VOID)
+    throw FileError(path, std::string("has ") +
+                              (format == SAMPLEFORMAT_IEEEFP ? "floating-point"
+                               : format == SAMPLEFORMAT_INT  ? "signed integer"
+                                                             : "complex") +
+                              " samples; impm reads unsigned 8- and 16-bit gray levels");
   if (TIFFIsTiled(tiff.get()))
     throw FileError(path, "is a tiled TIFF; impm reads strip TIFFs");
   GrayImage image;
@@ -141,6 +150,8 @@ GrayImage readTiff(const std::string& path) {
 }  // namespace
 
 GrayImage readGrayImage(const std::string& path) {
+  if (const std::string why = notAnInputFile(path, "the image file does not exist"); !why.empty())
+    throw FileError(path, why);
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw FileError(path, "cannot be opened");

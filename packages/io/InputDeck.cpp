@@ -10,6 +10,7 @@
 
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
+#include "io/InputFile.hpp"
 
 namespace impm {
 
@@ -77,6 +78,8 @@ int parameterListDepth(const std::string& xml) {
 }
 
 Teuchos::ParameterList readXml(const std::string& file) {
+  if (const std::string why = notAnInputFile(file, "no such deck file"); !why.empty())
+    throw InputError("", why);
   std::ifstream in(file);
   if (!in)
     throw InputError("", "cannot open the deck file");

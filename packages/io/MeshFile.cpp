@@ -4,9 +4,9 @@
 
 #include <algorithm>
 #include <cctype>
-#include <filesystem>
 
 #include "core/Errors.hpp"
+#include "io/InputFile.hpp"
 
 namespace impm {
 
@@ -83,6 +83,11 @@ void readBlocks(int file, int numBlocks, int numNodes, const std::string& path, 
     BodyMesh::Block block;
     block.id = ids[b], block.name = blockNames[b], block.type = type;
     block.nodesPerElement = supportedNodes(type, nodes);
+    if (count == 0) {  // an empty block (Exodus' "NULL" type): a body made of it is refused
+      block.nodesPerElement = std::max(block.nodesPerElement, 4);
+      mesh.blocks.push_back(std::move(block));
+      continue;
+    }
     if (block.nodesPerElement == 0)
       throw FileError(path, "element block '" + block.name + "' has " + type + " elements (" +
                                 std::to_string(nodes) + " nodes); a body mesh takes QUAD4 or TRI3");
@@ -131,8 +136,8 @@ void readSideSets(int file, int numSets, const std::string& path, BodyMesh& mesh
 }  // namespace
 
 BodyMesh readBodyMesh(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path))
-    throw FileError(path, "the mesh file does not exist");
+  if (const std::string why = notAnInputFile(path, "the mesh file does not exist"); !why.empty())
+    throw FileError(path, why);
   int cpuWordSize = sizeof(double), ioWordSize = 0;
   float version = 0;
   const int saved = ex_opts(0);  // the library's own messages would repeat ours
@@ -183,7 +188,8 @@ void writeBodyMesh(const std::string& path, const BodyMesh& mesh, const std::str
     std::vector<int> connectivity(b.connectivity);
     for (int& n : connectivity)
       ++n;
-    fail(ex_put_elem_conn(file.id(), b.id, connectivity.data()), "connectivity");
+    if (count > 0)  // an empty block has no connectivity variable
+      fail(ex_put_elem_conn(file.id(), b.id, connectivity.data()), "connectivity");
     blockNames.push_back(b.name);
   }
   for (const auto& s : mesh.sideSets) {

@@ -34,8 +34,8 @@ struct BodyMesh {
 };
 
 // Throws FileError(path, reason) for a missing or unreadable file, a mesh that is not 2-D,
-// an element type other than QUAD4/TRI3, or a side naming an element or side that does not
-// exist.
+// an element type other than QUAD4/TRI3 in a block that has elements (an empty block is kept,
+// with no connectivity), or a side naming an element or side that does not exist.
 BodyMesh readBodyMesh(const std::string& path);
 
 // Writes the mesh (overwriting); throws FileError when the file cannot be written.

@@ -36,8 +36,8 @@ def run_impm(args, deck, out_dir, sets, np=1, options=()):
 
 
 def read_csv(path):
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
+    with open(path, newline="") as f:  # a restart's notes are comment lines
+        rows = list(csv.DictReader(line for line in f if not line.startswith("# ")))
     return rows
 
 

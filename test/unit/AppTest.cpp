@@ -356,7 +356,7 @@ namespace {
 class MeshBodies : public ::testing::Test {
  protected:
   void TearDown() override {
-    for (const char* stem : {"squares", "clockwise", "folded", "bars"})
+    for (const char* stem : {"squares", "clockwise", "folded", "bars", "empty_block"})
       std::remove(file(stem).c_str());
   }
   static std::string file(const std::string& stem) {
@@ -447,6 +447,30 @@ TEST_F(MeshBodies, BadElementsAndFilesAreRefused) {
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_EQ(e.path(), "Bodies/b/Element Blocks");
+  }
+}
+
+// An empty element block (Exodus' NULL type) was refused even when the body did not use it.
+TEST_F(MeshBodies, AnEmptyBlockIsSkippedUnlessNamed) {
+  auto m = twoSquares();
+  m.blocks.push_back(m.blocks[1]);
+  m.blocks[2].id = 3, m.blocks[2].name = "empty", m.blocks[2].connectivity.clear();
+  writeBodyMesh(file("empty_block"), m, "test");
+  const BodyMesh read = readBodyMesh(file("empty_block"));
+  ASSERT_EQ(read.blocks.size(), 3u);
+  EXPECT_TRUE(read.blocks[2].connectivity.empty());
+  const auto grid = makeGridGeometry<2>({0.0, 0.0}, {2.0, 1.0}, {4, 2});
+  EXPECT_EQ(Mesh(params(file("empty_block")), "Bodies/b").fill(grid, 1, false).size(), 2u);
+  EXPECT_EQ(Mesh(params(file("empty_block"), {"left"}), "Bodies/b").fill(grid, 1, false).size(),
+            1u);
+  try {
+    Mesh named(params(file("empty_block"), {"left", "empty"}), "Bodies/b");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.path(), "Bodies/b/Element Blocks");
+    EXPECT_NE(std::string(e.what()).find("element block 'empty' of unit_app_empty_block_"),
+              std::string::npos);
+    EXPECT_NE(std::string(e.what()).find(" has no elements"), std::string::npos);
   }
 }
 

@@ -58,13 +58,14 @@ def png(path, rows, bits=8, colour=False):
     write_png(path, len(rows[0]), len(rows), raw, bits, colour)
 
 
-def tiff16(path, rows):
-    """Writes rows of 16-bit levels as a little-endian, uncompressed, one-strip TIFF."""
+def tiff16(path, rows, sample_format=1):
+    """Writes rows of 16-bit levels as a little-endian, uncompressed, one-strip TIFF
+    (sample_format: 1 unsigned, 2 signed, 3 floating-point)."""
     height, width = len(rows), len(rows[0])
     data = b"".join(struct.pack("<%dH" % width, *row) for row in rows)
     entries = [(256, 3, 1, width), (257, 3, 1, height), (258, 3, 1, 16), (259, 3, 1, 1),
                (262, 3, 1, 1), (273, 4, 1, 8), (277, 3, 1, 1), (278, 3, 1, height),
-               (279, 4, 1, len(data))]
+               (279, 4, 1, len(data)), (339, 3, 1, sample_format)]
     ifd = struct.pack("<H", len(entries))
     for tag, kind, count, value in entries:
         ifd += struct.pack("<HHI", tag, kind, count) + (
@@ -182,8 +183,14 @@ def main():
         f.write(data[: len(data) // 2])
     deck(os.path.join(work, "cut.xml"), {"b": image_body("cut.png", 100, 255)})
     expect_error(args.impm, os.path.join(work, "cut.xml"), ["cut.png", "PNG"], failures)
+    # Signed and floating-point samples were read as unsigned levels.
+    for name, sample_format, kind in (("signed", 2, "signed integer"), ("float", 3, "floating-point")):
+        tiff16(os.path.join(work, name + ".tif"), levels, sample_format)
+        deck(os.path.join(work, name + ".xml"), {"b": image_body(name + ".tif", 500, 1500)})
+        expect_error(args.impm, os.path.join(work, name + ".xml"),
+                     [name + ".tif", "has %s samples; impm reads unsigned" % kind], failures)
     deck(os.path.join(work, "missing.xml"), {"b": image_body("none.png", 100, 255)})
-    expect_error(args.impm, os.path.join(work, "missing.xml"), ["none.png", "cannot be opened"], failures)
+    expect_error(args.impm, os.path.join(work, "missing.xml"), ["none.png", "the image file does not exist"], failures)
     deck(os.path.join(work, "empty.xml"), {"b": image_body("l.png", 1, 99)})
     expect_error(args.impm, os.path.join(work, "empty.xml"),
                  ["Bodies/b/Gray Range", "no pixel", "l.png"], failures)

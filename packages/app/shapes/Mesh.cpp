@@ -46,8 +46,12 @@ std::vector<bool> chosenBlocks(const BodyMesh& mesh, const Teuchos::ParameterLis
   for (const auto& name : wanted) {
     bool found = false;
     for (std::size_t b = 0; b < mesh.blocks.size(); ++b)
-      if (mesh.blocks[b].name == name)
+      if (mesh.blocks[b].name == name) {
+        if (mesh.blocks[b].connectivity.empty())
+          throw InputError(path + "/Element Blocks",
+                           "element block '" + name + "' of " + file + " has no elements");
         chosen[b] = found = true;
+      }
     if (!found)
       throw InputError(path + "/Element Blocks", file + " has no element block '" + name + "'");
   }
