@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "Version.hpp"
 #include "app/AppParameters.hpp"
 #include "app/Simulation.hpp"
 #include "core/Collective.hpp"
@@ -36,7 +37,7 @@ namespace {
 const char* kUsage =
     "usage: impm [--output-dir DIR] [--restart CHECKPOINT [--allow-physics-change]]\n"
     "            [--set Path/To/Param=value]... [--verbose | --quiet] deck.xml\n"
-    "       impm --list-parameters\n"
+    "       impm --list-parameters | --version\n"
     "       impm --help\n"
     "\n"
     "Runs the implicit MPM/FEM problem described by the Teuchos XML deck.\n"
@@ -53,6 +54,7 @@ const char* kUsage =
     "                     a line per step while steps take a second or more, otherwise\n"
     "                     one every few seconds, with the time elapsed and left)\n"
     "  --list-parameters  print every deck parameter with its type, default and meaning\n"
+    "  --version          print impm's version and commit and the libraries' versions\n"
     "  --kokkos-help      print the options of Kokkos (--kokkos-*), which impm passes on\n"
     "On SIGINT, SIGTERM or SIGUSR1 impm writes a checkpoint of the last finished step, prints\n"
     "how to continue from it, and exits with status 5 (a second signal stops it at once;\n"
@@ -60,10 +62,16 @@ const char* kUsage =
     "Exit status: 0 success, 1 bad input, checkpoint or failed write, 2 bad command line,\n"
     "3 numerical failure, 4 failed verification check, 5 stopped by a signal.\n";
 
+// After a command-line error: the usage's first lines, not the page of options.
+std::string synopsis() {
+  const std::string usage = kUsage;
+  return usage.substr(0, usage.find("\n\n") + 1) + "Run impm --help for the options.\n";
+}
+
 struct Arguments {
   std::string deck, outputDirectory, restart;
   std::vector<impm::Override> overrides;
-  bool list = false;
+  bool list = false, version = false;
   bool allowPhysicsChange = false;
   impm::Verbosity verbosity = impm::Verbosity::normal;
 };
@@ -96,6 +104,8 @@ Arguments parse(int argc, char** argv) {
     };
     if (arg == "--list-parameters")
       a.list = true;
+    else if (arg == "--version")
+      a.version = true;
     else if (arg == "--verbose")
       a.verbosity = impm::Verbosity::verbose;
     else if (arg == "--quiet")
@@ -121,7 +131,7 @@ Arguments parse(int argc, char** argv) {
     else
       throw impm::InputError("", "more than one deck given (" + a.deck + ", " + arg + ")");
   }
-  if (!a.list && a.deck.empty())
+  if (!a.list && !a.version && a.deck.empty())
     throw impm::InputError("", "no deck given");
   return a;
 }
@@ -284,8 +294,13 @@ int main(int argc, char** argv) {
     args = parse(keptCount, keptArgs);
   } catch (const impm::InputError& e) {
     if (root)
-      std::cerr << "impm: error: " << shortened(e.what()) << "\n" << kUsage;
+      std::cerr << "impm: error: " << shortened(e.what()) << "\n" << synopsis();
     return 2;
+  }
+  if (args.version) {
+    if (root)
+      std::cout << impm::versionText();
+    return 0;
   }
   const auto valid = impm::deckValidParameters();
   if (args.list) {

@@ -11,7 +11,20 @@ reverse; the file truncated at a random byte, or replaced by random bytes or by 
 and each value mutation also as a --set override.  The other files impm reads are mutated as
 well: checkpoints (truncated, bit-flipped, a dimension or a count changed), images (truncated,
 bit-flipped, other dimensions in the header) and Exodus meshes (truncated, bit-flipped,
-connectivity or counts that do not match the data).
+connectivity or counts that do not match the data).  Further families (FAMILIES, --families):
+  nox list              a Solver/NOX choice from NOX's own menu, a bogus one, or a bad number;
+  checkpoint attribute  one attribute of a checkpoint changed (must be refused: every byte a
+                        restart reads is checksummed);
+  concurrent writers    the same run started twice on one output directory, the second a
+                        random moment later (one must refuse, or the first have ended; the
+                        directory holds one run's history, steps in order);
+  restart change        a restart from an intact checkpoint with a mutated deck, sometimes
+                        with --allow-physics-change;
+  set path              a --set whose path names nothing (a misspelt parameter or list, a
+                        path through a value, empty components, no '='): must be refused;
+  deep nesting          a chain of 2 to 20,000 nested ParameterLists in the deck;
+  not a file            the deck, checkpoint, image or mesh replaced by a FIFO, a directory,
+                        a loop of links, a dangling link or a device: must be refused.
 
 Each mutant runs under a time limit (and a memory limit), on 1 rank or sometimes 2; at the
 limit it gets SIGUSR1, and a run that is alive stops cleanly (a valid mutant may ask for a
@@ -29,6 +42,7 @@ the mutant is saved (deck, files, command) under --keep for reproduction.
 
   fuzz.py --impm build/drivers/impm --count 300 --seed 1        a fixed sample (ctest)
   fuzz.py --impm build/drivers/impm --minutes 30 --seed 7       a campaign
+  fuzz.py ... --families "nox list,set path"                    a campaign over some families
 
 Only the Python standard library and netCDF's ncdump and ncgen are used.
 """
@@ -275,13 +289,313 @@ def mutate_netcdf(rng, path, out):
     return r.returncode == 0
 
 
+def change_attribute(rng, path):
+    """Changes one character of one global attribute's value (not the format version) through
+    the file's text form, written back with ncgen; the attribute's name, or None."""
+    text = subprocess.run(["ncdump", "-p", "9,17", path], capture_output=True,
+                          text=True).stdout
+    begin = text.find("// global attributes:")
+    starts = [m for m in re.finditer(r"^\t\t:(\w+) = ", text[begin:], re.M)
+              if m.group(1) != "impm_checkpoint_version"] if begin >= 0 else []
+    if not starts:
+        return None
+    m = rng.choice(starts)
+    first = begin + m.end()
+    last = text.index(" ;\n", first)
+    strings = [k for k in range(first, last) if text[k].isalnum() and
+               text[:k].count('"', first) % 2 == 1]
+    digits = [k for k in range(first, last) if text[k].isdigit()]
+    spots = strings if strings else digits
+    if not spots:
+        return None
+    k = rng.choice(spots)
+    pool = "0123456789" if text[k].isdigit() else "abcdefghijklmnopqrstuvwxyz"
+    text = text[:k] + rng.choice(pool.replace(text[k].lower(), "")) + text[k + 1:]
+    cdl = path + ".cdl"
+    with open(cdl, "w") as f:
+        f.write(text)
+    kind = subprocess.run(["ncdump", "-k", path], capture_output=True, text=True).stdout.strip()
+    r = subprocess.run(["ncgen", "-k", kind or "nc4", "-o", path + ".new", cdl],
+                       capture_output=True)
+    os.remove(cdl)
+    if r.returncode != 0 or not os.path.exists(path + ".new"):
+        return None
+    os.replace(path + ".new", path)
+    return m.group(1)
+
+
 class Mutant:
-    def __init__(self, number, description, deck, argv, np, files):
-        self.number, self.description, self.deck, self.argv = number, description, deck, argv
-        self.np, self.files = np, files  # files: the paths impm may name in an error
+    def __init__(self, number, family, description, deck, argv, np, files, partner_delay=None):
+        self.number, self.family, self.description = number, family, description
+        self.deck, self.argv, self.np, self.files = deck, argv, np, files
+        # files: the paths impm may name in an error; partner_delay: a second, identical run
+        # starts this many seconds after the first (concurrent writers).
+        self.partner_delay = partner_delay
 
 
-def make_mutant(rng, corpus, number, root_dir):
+# The families of mutants and their weights in a campaign that draws from all of them.
+FAMILIES = {"deck tree": 50, "deck bytes": 8, "deck directory": 1, "checkpoint": 8,
+            "image or mesh": 10, "nox list": 5, "checkpoint attribute": 4,
+            "concurrent writers": 3, "restart change": 4, "set path": 4, "deep nesting": 2,
+            "not a file": 3}
+
+# NOX's own menu (NOX 13.2), with values it does not know: impm serves some, refuses the
+# others by name; none may crash it.
+NOX_MENU = {
+    "Nonlinear Solver": ["Line Search Based", "Trust Region Based", "Inexact Trust Region Based",
+                         "Tensor Based", "Single Step", "Anderson Accelerated Fixed-Point",
+                         "Pseudo-Transient", "Bogus", ""],
+    "Direction/Method": ["Newton", "Steepest Descent", "NonlinearCG", "Broyden", "Tensor",
+                         "Modified-Newton", "Quasi-Newton", "User Defined", "Bogus"],
+    "Line Search/Method": ["Full Step", "Backtrack", "Polynomial", "More'-Thuente",
+                           "NonlinearCG", "Safeguarded Step", "Tensor", "User Defined", "Bogus"],
+    "Line Search/Polynomial/Interpolation Type": ["Quadratic", "Cubic", "Quadratic3", "Bogus"],
+    "Line Search/Polynomial/Sufficient Decrease Condition": ["Armijo-Goldstein", "Ared/Pred",
+                                                             "None", "Bogus"],
+    "Line Search/Backtrack/Max Iters": NUMBERS,
+    "Line Search/Backtrack/Minimum Step": NUMBERS,
+    "Line Search/Full Step/Full Step": NUMBERS,
+    "Direction/Newton/Forcing Term Method": ["Constant", "Type 1", "Type 2", "Bogus"],
+    "Trust Region/Minimum Trust Region Radius": NUMBERS,
+    "Printing/Output Information": ["0", "-1", "127", "x"],
+}
+
+
+def image_or_mesh_file(tree):
+    """The first image or mesh file the deck names, relative to its directory, or None."""
+    for el, _, _ in elements(tree.getroot()):
+        if el.tag == "Parameter" and el.get("name") in ("Image File", "Mesh File"):
+            return el.get("value")
+    return None
+
+
+def own_copy(d, corpus, sub):
+    """The mutant's own copy of the corpus' images/ or meshes/ (to change one file)."""
+    os.remove(os.path.join(d, sub))
+    shutil.copytree(os.path.join(corpus.dir, sub), os.path.join(d, sub))
+
+
+def deck_tree(rng, corpus, d, name):
+    deck = os.path.join(d, name)
+    tree = copy.deepcopy(corpus.decks[name])
+    description, override = mutate_tree(rng, tree.getroot())
+    tree.write(deck)
+    return deck, description, [override] if override else [], [], [deck]
+
+
+def deck_bytes(rng, corpus, d, name):
+    deck = os.path.join(d, name)
+    corpus.decks[name].write(deck)
+    with open(deck, "rb") as f:
+        data, how = mutate_bytes(rng, f.read())
+    with open(deck, "wb") as f:
+        f.write(data)
+    return deck, how + " deck", [], [], [deck]
+
+
+def deck_directory(rng, corpus, d, name):
+    deck = os.path.join(d, name)
+    os.makedirs(deck)
+    return deck, "the deck is a directory", [], [], [deck]
+
+
+def restart_of(corpus, d, name, target):
+    """The deck of a checkpoint's run, and an intact copy of the checkpoint at target."""
+    deck = os.path.join(d, name)
+    corpus.decks[name].write(deck)
+    shutil.copy(corpus.checkpoints[name], target)
+    return deck
+
+
+def checkpoint(rng, corpus, d, name):
+    name = rng.choice(sorted(corpus.checkpoints))
+    target = os.path.join(d, "restart.nc")
+    deck = restart_of(corpus, d, name, target)
+    if rng.random() < 0.6:
+        with open(target, "rb") as f:
+            data, how = mutate_bytes(rng, f.read())
+        with open(target, "wb") as f:
+            f.write(data)
+    else:
+        how = "counts changed in" if mutate_netcdf(rng, target, target + ".new") else "copied"
+        if os.path.exists(target + ".new"):
+            os.replace(target + ".new", target)
+    return deck, how + " checkpoint of " + name, [], ["--restart", target], [deck, target]
+
+
+def checkpoint_attribute(rng, corpus, d, name):
+    name = rng.choice(sorted(corpus.checkpoints))
+    target = os.path.join(d, "restart.nc")
+    deck = restart_of(corpus, d, name, target)
+    changed = change_attribute(rng, target)
+    description = ("attribute %s changed in the checkpoint of %s (must be refused)"
+                   % (changed, name)) if changed else "intact checkpoint of " + name
+    return deck, description, [], ["--restart", target], [deck, target]
+
+
+def restart_change(rng, corpus, d, name):
+    name = rng.choice(sorted(corpus.checkpoints))
+    target = os.path.join(d, "restart.nc")
+    deck = restart_of(corpus, d, name, target)
+    tree = copy.deepcopy(corpus.decks[name])
+    description, override = mutate_tree(rng, tree.getroot())
+    tree.write(deck)
+    extra = ["--restart", target]
+    if rng.random() < 0.3:
+        extra.append("--allow-physics-change")
+    return (deck, "restart of %s with %s%s" % (name, description, " (allowed)" if len(extra) > 2
+                                                 else ""),
+            [override] if override else [], extra, [deck, target])
+
+
+def image_or_mesh(rng, corpus, d, name):
+    users = {"images": ["cylinder_lame_image.xml", "porous_specimen.xml"],
+             "meshes": ["cylinder_lame_mesh.xml"]}
+    sub = rng.choice([s for s in users if getattr(corpus, s)])
+    name = rng.choice([n for n in users[sub] if n in corpus.decks])
+    deck = os.path.join(d, name)
+    corpus.decks[name].write(deck)
+    own_copy(d, corpus, sub)
+    victim = os.path.join(d, rng.choice(getattr(corpus, sub)))
+    if sub == "meshes" and rng.random() < 0.5:
+        how = "counts changed in" if mutate_netcdf(rng, victim, victim + ".new") else "kept"
+        if os.path.exists(victim + ".new"):
+            os.replace(victim + ".new", victim)
+    elif sub == "images" and rng.random() < 0.4:
+        with open(victim, "rb") as f:
+            data = bytearray(f.read())
+        if len(data) > 24:  # PNG IHDR width and height
+            data[16 + rng.randrange(8)] = rng.randrange(256)
+        with open(victim, "wb") as f:
+            f.write(bytes(data))
+        how = "other dimensions in"
+    else:
+        with open(victim, "rb") as f:
+            data, how = mutate_bytes(rng, f.read())
+        with open(victim, "wb") as f:
+            f.write(data)
+    return deck, "%s %s" % (how, os.path.relpath(victim, d)), [], [], [deck, victim]
+
+
+def nox_list(rng, corpus, d, name):
+    deck = os.path.join(d, name)
+    corpus.decks[name].write(deck)
+    sets = []
+    for _ in range(rng.randint(1, 3)):
+        path = rng.choice(sorted(NOX_MENU))
+        sets.append("Solver/NOX/%s=%s" % (path, rng.choice(NOX_MENU[path])))
+    if rng.random() < 0.3:
+        sets.append("Solver/Line Search=" + rng.choice(["Backtrack", "Full Step", "Polynomial"]))
+    return deck, "--set " + "; ".join(sets), sets, [], [deck]
+
+
+def set_path(rng, corpus, d, name):
+    """A --set naming nothing the deck has or may have: refused."""
+    deck = os.path.join(d, name)
+    tree = corpus.decks[name]
+    tree.write(deck)
+    params = [(el, p) for el, _, p in elements(tree.getroot())
+              if el.tag == "Parameter" and p[0] != "Solver"]
+    el, path = rng.choice(params)
+    names = [c.get("name") for c in tree.getroot().iter() if c.get("name")]
+    kind = rng.randrange(6)
+    if kind == 0:  # a misspelt parameter
+        leaf = one_letter(rng, path[-1])
+        while leaf in names:
+            leaf += "x"
+        text = "/".join(path[:-1] + [leaf]) + "=1"
+    elif kind == 1 and len(path) > 1:  # a misspelt list
+        k = rng.randrange(len(path) - 1)
+        step = one_letter(rng, path[k])
+        while step in names:
+            step += "x"
+        text = "/".join(path[:k] + [step] + path[k + 1:]) + "=1"
+    elif kind == 2:  # through a value
+        text = "/".join(path + ["x"]) + "=1"
+    elif kind == 3:  # an empty component
+        k = rng.randrange(len(path) + 1)
+        text = "/".join(path[:k] + [""] + path[k:]) + "=" + el.get("value", "1")
+    elif kind == 4:  # no value
+        text = "/".join(path)
+    else:  # a leading or trailing '/'
+        text = rng.choice(["/", ""]) + "/".join(path) + rng.choice(["/", ""]) + "=1"
+        if not text.startswith("/") and "/=" not in text:
+            text = "/" + text
+    return deck, "--set %r (must be refused)" % text, [text], [], [deck]
+
+
+def deep_nesting(rng, corpus, d, name):
+    """A chain of nested lists at a random place; the text is made by hand (ElementTree's
+    writer recurses and cannot write 20,000 levels)."""
+    deck = os.path.join(d, name)
+    tree = copy.deepcopy(corpus.decks[name])
+    lists = [el for el, _, _ in elements(tree.getroot()) if el.tag == "ParameterList"]
+    where = rng.choice(lists + [tree.getroot()])
+    ET.SubElement(where, "Parameter", {"name": "DEEP-HERE", "type": "int", "value": "1"})
+    text = ET.tostring(tree.getroot(), encoding="unicode")
+    depth = rng.choice([2, 20, 31, 32, 33, 100, 5000, 20000])
+    chain = ('<ParameterList name="a">' * depth + '<Parameter name="b" type="int" value="1"/>' +
+             "</ParameterList>" * depth)
+    text = re.sub(r'<Parameter name="DEEP-HERE"[^>]*/>', chain, text)
+    with open(deck, "w") as f:
+        f.write(text)
+    return deck, "%d nested lists (must be refused)" % depth, [], [], [deck]
+
+
+def not_a_file(rng, corpus, d, name):
+    """The deck, a checkpoint, an image or a mesh replaced by what is not a regular file."""
+    target_kind = rng.choice(["deck", "checkpoint", "image or mesh"])
+    deck = os.path.join(d, name)
+    corpus.decks[name].write(deck)
+    extra = []
+    if target_kind == "checkpoint" and corpus.checkpoints:
+        name = rng.choice(sorted(corpus.checkpoints))
+        victim = os.path.join(d, "restart.nc")
+        deck = restart_of(corpus, d, name, victim)
+        extra = ["--restart", victim]
+    elif target_kind == "image or mesh":
+        name = rng.choice(["cylinder_lame_image.xml", "cylinder_lame_mesh.xml",
+                           "porous_specimen.xml"])
+        deck = os.path.join(d, name)
+        corpus.decks[name].write(deck)
+        relative = image_or_mesh_file(corpus.decks[name])
+        own_copy(d, corpus, relative.split("/")[0])
+        victim = os.path.join(d, relative)
+    else:
+        victim = deck
+    if os.path.exists(victim):
+        os.remove(victim)
+    how = rng.choice(["fifo", "directory", "link loop", "dangling link", "/dev/zero",
+                      "/dev/null"])
+    if how == "fifo":
+        os.mkfifo(victim)
+    elif how == "directory":
+        os.makedirs(victim)
+    elif how == "link loop":
+        os.symlink(victim + ".back", victim)
+        os.symlink(victim, victim + ".back")
+    elif how == "dangling link":
+        os.symlink(victim + ".none", victim)
+    else:
+        os.symlink(how, victim)
+    return (deck, "%s is a %s (must be refused)" % (os.path.relpath(victim, d), how), [], extra,
+            [deck, victim])
+
+
+def concurrent_writers(rng, corpus, d, name):
+    deck = os.path.join(d, name)
+    corpus.decks[name].write(deck)
+    return deck, "the same run twice on one directory", [], [], [deck]
+
+
+MAKERS = {"deck tree": deck_tree, "deck bytes": deck_bytes, "deck directory": deck_directory,
+          "checkpoint": checkpoint, "image or mesh": image_or_mesh, "nox list": nox_list,
+          "checkpoint attribute": checkpoint_attribute, "concurrent writers": concurrent_writers,
+          "restart change": restart_change, "set path": set_path, "deep nesting": deep_nesting,
+          "not a file": not_a_file}
+
+
+def make_mutant(rng, corpus, number, root_dir, families):
     """A directory with the mutated deck (and files) and the command line to run."""
     d = os.path.join(root_dir, "m%06d" % number)
     os.makedirs(d)
@@ -289,104 +603,46 @@ def make_mutant(rng, corpus, number, root_dir):
         src = os.path.join(corpus.dir, sub)
         if os.path.isdir(src):
             os.symlink(src, os.path.join(d, sub))
+    family = rng.choices(families, [FAMILIES[f] for f in families])[0]
+    if not corpus.checkpoints and family in ("checkpoint", "checkpoint attribute",
+                                             "restart change"):
+        family = "deck tree"
     name = rng.choice(sorted(corpus.decks))
-    deck = os.path.join(d, name)
-    sets, extra, files = [], [], [deck]
-    what = rng.random()
-    if what < 0.62:  # the deck's tree
-        tree = copy.deepcopy(corpus.decks[name])
-        description, override = mutate_tree(rng, tree.getroot())
-        tree.write(deck)
-        if override:
-            sets.append(override)
-    elif what < 0.72:  # the deck's bytes
-        tree = corpus.decks[name]
-        tree.write(deck)
-        with open(deck, "rb") as f:
-            data, how = mutate_bytes(rng, f.read())
-        with open(deck, "wb") as f:
-            f.write(data)
-        description = how + " deck"
-    elif what < 0.74:
-        os.makedirs(deck)
-        description = "the deck is a directory"
-    elif what < 0.84 and corpus.checkpoints:  # a checkpoint to restart from
-        name = rng.choice(sorted(corpus.checkpoints))
-        deck = os.path.join(d, name)
-        corpus.decks[name].write(deck)
-        source = corpus.checkpoints[name]
-        target = os.path.join(d, "restart.nc")
-        if rng.random() < 0.6:
-            with open(source, "rb") as f:
-                data, how = mutate_bytes(rng, f.read())
-            with open(target, "wb") as f:
-                f.write(data)
-        else:
-            how = "counts changed in" if mutate_netcdf(rng, source, target) else "copied"
-            if not os.path.exists(target):
-                shutil.copy(source, target)
-        extra += ["--restart", target]
-        files = [deck, target]
-        description = how + " checkpoint of " + name
-    else:  # an image or a mesh of a deck that reads it
-        users = {"images": ["cylinder_lame_image.xml", "porous_specimen.xml"],
-                 "meshes": ["cylinder_lame_mesh.xml"]}
-        sub = rng.choice([s for s in users if getattr(corpus, s)])
-        name = rng.choice([n for n in users[sub] if n in corpus.decks])
-        deck = os.path.join(d, name)
-        corpus.decks[name].write(deck)
-        os.remove(os.path.join(d, sub))
-        os.makedirs(os.path.join(d, sub))
-        for f in os.listdir(os.path.join(corpus.dir, sub)):
-            shutil.copy(os.path.join(corpus.dir, sub, f), os.path.join(d, sub, f))
-        victim = os.path.join(d, rng.choice(getattr(corpus, sub)))
-        if sub == "meshes" and rng.random() < 0.5:
-            how = "counts changed in" if mutate_netcdf(rng, victim, victim + ".new") else "kept"
-            if os.path.exists(victim + ".new"):
-                os.replace(victim + ".new", victim)
-        elif sub == "images" and rng.random() < 0.4:
-            with open(victim, "rb") as f:
-                data = bytearray(f.read())
-            if len(data) > 24:  # PNG IHDR width and height
-                data[16 + rng.randrange(8)] = rng.randrange(256)
-            with open(victim, "wb") as f:
-                f.write(bytes(data))
-            how = "other dimensions in"
-        else:
-            with open(victim, "rb") as f:
-                data, how = mutate_bytes(rng, f.read())
-            with open(victim, "wb") as f:
-                f.write(data)
-        files = [deck, victim]
-        description = "%s %s" % (how, os.path.relpath(victim, d))
+    deck, description, sets, extra, files = MAKERS[family](rng, corpus, d, name)
     out = os.path.join(d, "out")
     argv = ["--output-dir", out] + extra
     for s in sets:
         argv += ["--set", s]
     argv.append(deck)
     np = 2 if rng.random() < 0.2 else 1
+    # The shortened runs take a fraction of a second: most pairs start close enough to meet.
+    delay = rng.choice([0.0, rng.uniform(0.0, 0.3), rng.uniform(0.0, 1.5)]) \
+        if family == "concurrent writers" else None
     with open(os.path.join(d, "command.txt"), "w") as f:
         f.write(description + "\n")
-    return Mutant(number, description, deck, argv, np, files + [out])
+    return Mutant(number, family, description, deck, argv, np, files + [out], delay)
 
 
 # Lines mpirun prints when a rank exits with a non-zero status: not impm's, but expected.
 MPIRUN = re.compile(r"^(-{20,}|Primary job +terminated normally|a non-zero exit code|"
                     r"(mpirun|mpiexec) detected|the job to be terminated|the job has been aborted|"
                     r"\s+Process name:|\s+Exit code:|Per user-direction|$)")
-USAGE = re.compile(r"^(usage: impm|\s+impm |\s*$|Runs the implicit|  --|Exit status|"
+USAGE = re.compile(r"^(usage: impm|\s+impm |\s+\[--|Run impm --help|\s*$|Runs the implicit|  --|Exit status|"
                    r"On SIGINT|how to continue|under mpirun|[0-9], |failure, |\s{20,})")
 
 
 def history_complete(path):
+    """'' when every row is complete and the steps increase (one run's rows, not two
+    interleaved), otherwise why not.  A restart's notes are comment lines."""
     try:
         with open(path) as f:
-            rows = [line.rstrip("\n").split(",") for line in f]
+            rows = [line.rstrip("\n").split(",") for line in f if not line.startswith("# ")]
     except OSError:
         return "no history"
     if len(rows) < 2:
         return "the history has no row"
     width = len(rows[0])
+    step = -1.0
     for k, r in enumerate(rows[1:], 1):
         if len(r) != width:
             return "history row %d has %d of %d columns" % (k, len(r), width)
@@ -395,6 +651,9 @@ def history_complete(path):
                 float(v)
             except ValueError:
                 return "history row %d holds %r" % (k, v[:20])
+        if float(r[0]) <= step:
+            return "history row %d is step %s after step %g" % (k, r[0], step)
+        step = float(r[0])
     return ""
 
 
@@ -468,6 +727,27 @@ def judge(m, returncode, stdout, stderr, timed_out):
     return ""
 
 
+def judge_concurrent(m, runs):
+    """Two runs on one directory: each ends well or is refused for the other's lock, at least
+    one ends well, and the directory holds one run's complete outputs."""
+    out = m.argv[m.argv.index("--output-dir") + 1]
+    finished = 0
+    for k, (returncode, stdout, stderr, timed_out) in enumerate(runs):
+        which = ("first", "second")[k]
+        if timed_out:
+            return "the %s run hangs" % which
+        if returncode < 0 or returncode > 128:
+            return "the %s run was killed (status %d)" % (which, returncode)
+        lines = [l for l in stderr.splitlines() if l.startswith("impm: ")]
+        if returncode in (0, 4, 5):
+            finished += 1
+        elif not (len(lines) == 1 and "is in use by another impm run" in lines[0]):
+            return "the %s run exits %d: %s" % (which, returncode, stderr.strip()[:200])
+    if not finished:
+        return "neither run ended well"
+    return outputs_readable(out)
+
+
 def run_mutant(args, m):
     cmd = []
     if m.np > 1:
@@ -481,22 +761,40 @@ def run_mutant(args, m):
         resource.setrlimit(resource.RLIMIT_AS, (memory, memory))
         resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
 
-    began = time.time()
-    p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                         errors="replace", preexec_fn=limits)
-    timed_out = False
-    try:
-        stdout, stderr = p.communicate(timeout=args.timeout)
-    except subprocess.TimeoutExpired:
-        # A valid mutant may ask for a long run (Final Time = 1e6): one that is alive stops
-        # cleanly on SIGUSR1 (mpirun passes it on) and counts as a run; a hung one does not.
-        os.killpg(p.pid, signal.SIGUSR1)
+    def start():
+        return subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                                errors="replace", preexec_fn=limits)
+
+    def finish(p, timeout):
         try:
-            stdout, stderr = p.communicate(timeout=30)
+            stdout, stderr = p.communicate(timeout=max(timeout, 1))
+            return stdout, stderr, False
         except subprocess.TimeoutExpired:
-            timed_out = True
-            os.killpg(p.pid, signal.SIGKILL)
-            stdout, stderr = p.communicate()
+            # A valid mutant may ask for a long run (Final Time = 1e6): one that is alive
+            # stops cleanly on SIGUSR1 (mpirun passes it on) and counts as a run; a hung one
+            # does not.
+            os.killpg(p.pid, signal.SIGUSR1)
+            try:
+                stdout, stderr = p.communicate(timeout=30)
+                return stdout, stderr, False
+            except subprocess.TimeoutExpired:
+                os.killpg(p.pid, signal.SIGKILL)
+                stdout, stderr = p.communicate()
+                return stdout, stderr, True
+
+    began = time.time()
+    p = start()
+    if m.partner_delay is not None:
+        time.sleep(m.partner_delay)
+        second = start()
+        stdout, stderr, timed_out = finish(p, args.timeout - (time.time() - began))
+        stdout2, stderr2, timed_out2 = finish(second, args.timeout - (time.time() - began))
+        verdict = judge_concurrent(m, [(p.returncode, stdout, stderr, timed_out),
+                                       (second.returncode, stdout2, stderr2, timed_out2)])
+        return (verdict, max(p.returncode, second.returncode), time.time() - began,
+                stdout + "\n--- second run\n" + stdout2, stderr + "\n--- second run\n" + stderr2,
+                cmd)
+    stdout, stderr, timed_out = finish(p, args.timeout)
     verdict = judge(m, p.returncode, stdout, stderr, timed_out)
     return verdict, p.returncode, time.time() - began, stdout, stderr, cmd
 
@@ -516,10 +814,17 @@ def main():
     p.add_argument("--memory-mb", type=int, default=4096, help="address-space limit per process")
     p.add_argument("--keep", default="fuzz-failures", help="where failing mutants are saved")
     p.add_argument("--summary", help="write the counts as JSON here")
+    p.add_argument("--families", default=",".join(FAMILIES),
+                   help="comma-separated families to draw from (default: all): " +
+                   ", ".join(FAMILIES))
     args = p.parse_args()
     if not args.count and not args.minutes:
         p.error("give --count or --minutes")
     args.impm = os.path.abspath(args.impm)
+    families = [f.strip() for f in args.families.split(",") if f.strip()]
+    unknown = [f for f in families if f not in FAMILIES]
+    if unknown or not families:
+        p.error("unknown families %s; the families are %s" % (unknown, ", ".join(FAMILIES)))
     rng = random.Random(args.seed)
     work = tempfile.mkdtemp(prefix="impm-fuzz-")
     began = time.time()
@@ -530,6 +835,7 @@ def main():
     counts = {"mutants": 0, "exit 0": 0, "exit 4": 0, "input error": 0, "numerical failure": 0,
               "command-line error": 0, "stopped at the time limit": 0, "failures": 0}
     failures = []
+    by_family = {}
     number = 0
 
     def more():
@@ -541,7 +847,7 @@ def main():
         pending = {}
         while more() or pending:
             while more() and len(pending) < 2 * args.jobs:
-                m = make_mutant(rng, corpus, number, work)
+                m = make_mutant(rng, corpus, number, work, families)
                 number += 1
                 pending[pool.submit(run_mutant, args, m)] = m
             done, _ = concurrent.futures.wait(pending, return_when=concurrent.futures.FIRST_COMPLETED)
@@ -549,13 +855,22 @@ def main():
                 m = pending.pop(f)
                 verdict, rc, seconds, stdout, stderr, cmd = f.result()
                 counts["mutants"] += 1
+                family = by_family.setdefault(m.family, {"mutants": 0, "failures": 0})
+                family["mutants"] += 1
+                family["failures"] += 1 if verdict else 0
+                if m.partner_delay is not None and "is in use by another impm run" in stderr:
+                    family["refused"] = family.get("refused", 0) + 1  # the runs overlapped
                 if verdict:
                     counts["failures"] += 1
                     saved = os.path.join(args.keep, "m%06d" % m.number)
                     shutil.rmtree(saved, ignore_errors=True)
-                    shutil.copytree(os.path.dirname(m.deck) if os.path.isfile(m.deck)
-                                    else os.path.join(work, "m%06d" % m.number), saved,
-                                    symlinks=True)
+                    try:  # FIFOs and devices are not copied (shutil refuses them)
+                        shutil.copytree(os.path.dirname(m.deck) if os.path.isfile(m.deck)
+                                        else os.path.join(work, "m%06d" % m.number), saved,
+                                        symlinks=True)
+                    except shutil.Error:
+                        pass
+                    os.makedirs(saved, exist_ok=True)
                     with open(os.path.join(saved, "command.txt"), "w") as out:
                         out.write("%s\n%s\nexit status %d\n--- stdout\n%s\n--- stderr\n%s\n" % (
                             m.description, " ".join(shlex.quote(c) for c in cmd), rc,
@@ -583,9 +898,14 @@ def main():
               counts["exit 0"] + counts["exit 4"] + counts["stopped at the time limit"],
               counts["exit 4"], counts["stopped at the time limit"], counts["input error"],
               counts["numerical failure"], counts["command-line error"], counts["failures"]))
+    for name in sorted(by_family):
+        print("  %-22s %5d mutants, %d failures%s" % (
+            name, by_family[name]["mutants"], by_family[name]["failures"],
+            ", %d refused for the other's lock" % by_family[name]["refused"]
+            if "refused" in by_family[name] else ""))
     if args.summary:
         with open(args.summary, "w") as f:
-            json.dump(dict(counts, seconds=round(elapsed), seed=args.seed), f)
+            json.dump(dict(counts, seconds=round(elapsed), seed=args.seed, families=by_family), f)
     sys.exit(1 if failures else 0)
 
 
