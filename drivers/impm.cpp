@@ -22,7 +22,6 @@
 #include <string>
 #include <vector>
 
-#include "Version.hpp"
 #include "app/AppParameters.hpp"
 #include "app/Simulation.hpp"
 #include "core/Collective.hpp"
@@ -31,6 +30,7 @@
 #include "core/Parameters.hpp"
 #include "core/StopRequest.hpp"
 #include "io/InputDeck.hpp"
+#include "io/Version.hpp"
 
 namespace {
 

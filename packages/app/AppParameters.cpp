@@ -31,14 +31,14 @@ Teuchos::ParameterList discretizationParameters() {
                 "cell: the laws see each particle's F with its determinant replaced by the "
                 "volume-weighted average over the particles of its grid cell (the F-bar method "
                 "against volumetric locking; doc/theory.md); none: the particles' own F");
-  declareDouble(valid, "Ghost Penalty", 1e-3,
-                "gamma of the ghost penalty of updated-Lagrangian steps: gamma E h int [[d_n "
-                "du]] . [[d_n dv]] on the faces between two active grid cells of which one is "
-                "on the body's boundary, with E the largest modulus of the laws.  It gives the "
-                "nodes that a body reaches by a sliver the stiffness of their neighbours, "
-                "and vanishes for increments linear across the face (doc/theory.md).  0: none; "
-                "total-Lagrangian steps have none",
-                Bounds::nonNegative());
+  declareDouble(
+      valid, "Ghost Penalty", 1e-3,
+      "gamma of the ghost penalty: gamma E h int [[d_n "
+      "du]] . [[d_n dv]] on the faces between two active grid cells of which one is "
+      "on the body's boundary, with E the largest Young's modulus of the laws.  It gives the "
+      "nodes that a body reaches by a sliver the stiffness of their neighbours, "
+      "and vanishes for increments linear across the face (doc/theory.md).  0: none",
+      Bounds::nonNegative());
   return valid;
 }
 

@@ -135,7 +135,7 @@ ParticleGridMap<Dim, Space> buildParticleGridMap(const Weights& weights,
       "impm::countBoxNodes", Kokkos::RangePolicy<Exec>(0, n),
       KOKKOS_LAMBDA(const int p, int& outside) {
         int lo[Dim] = {}, hi[Dim] = {};
-        typename Weights::Particle at;
+        typename Weights::Particle at{};
         if (!weights.nodeBox(p, at, lo, hi, kGridTolerance)) {
           if (p < outside)
             outside = p;
@@ -170,11 +170,11 @@ ParticleGridMap<Dim, Space> buildParticleGridMap(const Weights& weights,
       "impm::fillMapEntries", Kokkos::RangePolicy<Exec>(0, n),
       KOKKOS_LAMBDA(const int p, std::size_t& sum) {
         int lo[Dim] = {}, hi[Dim] = {};
-        typename Weights::Particle at;
+        typename Weights::Particle at{};
         weights.nodeBox(p, at, lo, hi, kGridTolerance);
         std::size_t k = boxPtr(p);
         detail::forEachNodeInBox<Dim>(grid, lo, hi, [&](const int* idx, GlobalId id) {
-          double phi, grad[Dim];
+          double phi = 0.0, grad[Dim] = {};
           weights.evaluate(at, lo, idx, phi, grad);
           if (detail::negligible<Dim>(grid, phi, grad))
             return;

@@ -11,6 +11,7 @@
 
 #include "core/CapturedOutput.hpp"
 #include "core/Errors.hpp"
+#include "io/Version.hpp"
 
 namespace impm {
 
@@ -168,6 +169,10 @@ void ExodusFile::create(const std::string& path, const std::string& title, const
     check(ex_put_init(id, title.c_str(), mesh.dimension, static_cast<int64_t>(numNodes_),
                       static_cast<int64_t>(numElements_), 1, 0, 0),
           path, "init", said);
+    // Which impm wrote it, in the file's info records (ParaView shows them, ncdump prints them).
+    std::string made = versionLine().substr(0, MAX_LINE_LENGTH);
+    char* records[] = {made.data()};
+    check(ex_put_info(id, 1, records), path, "info", said);
     defineContents(id, mesh, {nodalVariables, elementVariables, globalVariables}, path, said);
     writeMesh(id, mesh, path, said);
     check(ex_close(file.release()), path, "close", said);

@@ -100,6 +100,9 @@ class FiniteStrainPlasticity : public Material<2> {
   double maxModulus(const Evaluation& /*at*/) const override {
     return parameters_.lambda + 2.0 * parameters_.mu;
   }
+  double youngModulus(const Evaluation& /*at*/) const override {
+    return youngFromLame(parameters_.lambda, parameters_.mu);
+  }
 
  private:
   Parameters parameters_;

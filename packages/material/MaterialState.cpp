@@ -99,8 +99,10 @@ void commitMaterialState(const ParticleSet<Dim>& particles, const Materials<Dim>
 
 template <int Dim>
 double maxModulus(const ParticleSet<Dim>& particles, const Materials<Dim>& materials, int m,
-                  const Comm& comm) {
-  const double local = materials[m]->maxModulus(evaluationOf(particles, materials, m, particles.F));
+                  const Comm& comm, Modulus which) {
+  const auto at = evaluationOf(particles, materials, m, particles.F);
+  const double local =
+      which == Modulus::young ? materials[m]->youngModulus(at) : materials[m]->maxModulus(at);
   double global = 0.0;
   Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, local, Teuchos::outArg(global));
   return global;
@@ -115,7 +117,8 @@ double maxModulus(const ParticleSet<Dim>& particles, const Materials<Dim>& mater
                                                    const std::vector<ParticleSet<D>::Table>&); \
   template void commitMaterialState<D>(const ParticleSet<D>&, const Materials<D>&,             \
                                        const TrialState<D>&);                                  \
-  template double maxModulus<D>(const ParticleSet<D>&, const Materials<D>&, int, const Comm&);
+  template double maxModulus<D>(const ParticleSet<D>&, const Materials<D>&, int, const Comm&,  \
+                                Modulus);
 IMPM_INSTANTIATE(1)
 IMPM_INSTANTIATE(2)
 #undef IMPM_INSTANTIATE

@@ -54,9 +54,13 @@ template <int Dim>
 void commitMaterialState(const ParticleSet<Dim>& particles, const Materials<Dim>& materials,
                          const TrialState<Dim>& trial);
 
-// The largest small-strain modulus of every material over all ranks.  Collective.
+// Which modulus of a law: the largest small-strain one (wave speeds, constraint scales) or
+// Young's (the ghost penalty); Material::maxModulus and Material::youngModulus.
+enum class Modulus { largest, young };
+
+// That modulus of material m, the largest over all ranks.  Collective.
 template <int Dim>
 double maxModulus(const ParticleSet<Dim>& particles, const Materials<Dim>& materials, int m,
-                  const Comm& comm);
+                  const Comm& comm, Modulus which = Modulus::largest);
 
 }  // namespace impm

@@ -136,6 +136,9 @@ class PlaneStrainLaw : public Material<2> {
   double maxModulus(const Evaluation& /*at*/) const override {
     return lame_.lambda + 2.0 * lame_.mu;  // P-wave modulus: c = sqrt((lambda + 2 mu) / rho)
   }
+  double youngModulus(const Evaluation& /*at*/) const override {
+    return youngFromLame(lame_.lambda, lame_.mu);
+  }
   bool isLinear() const override { return Law::linear; }
   bool hasSymmetricTangent() const override { return true; }  // hyperelastic
 

@@ -112,20 +112,21 @@ GridSystem<Dim>::GridSystem(const NodeOwnership<Dim>& ownership, Method method,
       trial_(particles, materials) {
   loaded_ = carriesForces<Dim>(particles_);
   if (ghostPenalty_ > 0.0)
-    ghostDofs_ =
-        ghostFaceDofs<Dim>(ghostFaces_, grid_, *dofs_.overlapMap(), ghostPenalty_ * lawModulus());
+    ghostDofs_ = ghostFaceDofs<Dim>(ghostFaces_, grid_, *dofs_.overlapMap(),
+                                    ghostPenalty_ * lawModulus(Modulus::young));
 }
 
 template <int Dim>
-double GridSystem<Dim>::lawModulus() const {
-  if (!lawModulus_) {
+double GridSystem<Dim>::lawModulus(Modulus which) const {
+  auto& cached = lawModulus_[which == Modulus::young];
+  if (!cached) {
     double modulus = 0.0;
     for (std::size_t m = 0; m < materials_.size(); ++m)
       modulus = std::max(modulus, maxModulus(particles_, materials_, static_cast<int>(m),
-                                             *dofs_.ownedMap()->getComm()));
-    lawModulus_ = modulus > 0 ? modulus : 1.0;
+                                             *dofs_.ownedMap()->getComm(), which));
+    cached = modulus > 0 ? modulus : 1.0;
   }
-  return *lawModulus_;
+  return *cached;
 }
 
 template <int Dim>
@@ -414,9 +415,21 @@ template <int Dim>
 void GridSystem<Dim>::assembleResidual(const Vector& xOverlap, Vector& residual) const {
   IMPM_TIMER("residual");
   const auto a = acceleration(xOverlap);
-  auto xHost = xOverlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   FEMultiVector f(dofs_.ownedMap(), importer_, 1);
   f.beginAssembly();
+  // A failure one rank finds (a loaded face that no integration point reaches) stops every
+  // rank here: alone, it left the others waiting in endAssembly for ever.
+  collectively(*dofs_.ownedMap()->getComm(), [&] { addLocalResidual(a, xOverlap, f); });
+  f.endAssembly();
+  Tpetra::deep_copy(residual, *f.getVector(0));
+  if (inertia_.c0 != 0.0 && inertia_.mass == MassType::lumped)
+    addLumpedInertia(xOverlap, residual);
+}
+
+template <int Dim>
+void GridSystem<Dim>::addLocalResidual(const Teuchos::RCP<const Vector>& a, const Vector& xOverlap,
+                                       FEMultiVector& f) const {
+  auto xHost = xOverlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   {
     auto local = f.getLocalViewDevice(Tpetra::Access::ReadWrite);
     addInternalForce<Dim>(particleGridMap_, entryDofs_, particles_, work_.Pn, local);
@@ -434,10 +447,6 @@ void GridSystem<Dim>::assembleResidual(const Vector& xOverlap, Vector& residual)
     for (std::size_t c = 0; c < contributions_.size(); ++c)
       contributions_[c]->addResidual(context(static_cast<int>(c)), constHost(xHost), fHost);
   }
-  f.endAssembly();
-  Tpetra::deep_copy(residual, *f.getVector(0));
-  if (inertia_.c0 != 0.0 && inertia_.mass == MassType::lumped)
-    addLumpedInertia(xOverlap, residual);
 }
 
 template <int Dim>
@@ -487,31 +496,36 @@ void GridSystem<Dim>::evaluate(const Vector& x, Vector* residual, CrsMatrix* jac
     IMPM_TIMER("Jacobian");
     if (layout_.coupling == NodeCoupling::self && !hasDiagonalJacobian())
       throw std::logic_error("a Jacobian with node couplings asked of a diagonal graph");
-    auto xHost = xo->getLocalViewHost(Tpetra::Access::ReadOnly);
     auto& J = dynamic_cast<FECrsMatrix&>(*jacobian);
     J.beginAssembly();
     J.setAllToScalar(0.0);
-    if (!frozen_) {
-      addTangent<Dim>(particleGridMap_, entryDofs_, particles_, work_.An, J.getLocalMatrixDevice(),
-                      work_.theta);
-      if (fbar_ != FBar::none)
-        addFBarTangent<Dim>(particleGridMap_, entryDofs_, particles_, cellGroups_, work_.g,
-                            work_.theta, work_.omega, work_.An, J.getLocalMatrixDevice());
-      if (ghostDofs_.size() > 0)
-        addGhostTangent<Dim>(ghostDofs_, J.getLocalMatrixDevice());
-    }
-    if (inertia_.c0 != 0.0 && inertia_.mass == MassType::lumped)
-      addDiagonal(inertia_.c0, lumpedMass()->getLocalViewDevice(Tpetra::Access::ReadOnly),
-                  J.getLocalMatrixDevice());  // the owned rows, first on the overlap map
-    else if (inertia_.c0 != 0.0)
-      addConsistentMassMatrix<Dim>(inertia_.c0, particleGridMap_, entryDofs_, particles_.mass,
-                                   J.getLocalMatrixDevice());
-    for (std::size_t c = 0; c < contributions_.size(); ++c)
-      contributions_[c]->addJacobian(context(static_cast<int>(c)), constHost(xHost), J);
+    collectively(*dofs_.ownedMap()->getComm(), [&] { addLocalJacobian(*xo, J); });  // as above
     J.endAssembly();
     applyConstraints(x, nullptr, &J);
     requireFinite(J);
   }
+}
+
+template <int Dim>
+void GridSystem<Dim>::addLocalJacobian(const Vector& xOverlap, FECrsMatrix& J) const {
+  if (!frozen_) {
+    addTangent<Dim>(particleGridMap_, entryDofs_, particles_, work_.An, J.getLocalMatrixDevice(),
+                    work_.theta);
+    if (fbar_ != FBar::none)
+      addFBarTangent<Dim>(particleGridMap_, entryDofs_, particles_, cellGroups_, work_.g,
+                          work_.theta, work_.omega, work_.An, J.getLocalMatrixDevice());
+    if (ghostDofs_.size() > 0)
+      addGhostTangent<Dim>(ghostDofs_, J.getLocalMatrixDevice());
+  }
+  if (inertia_.c0 != 0.0 && inertia_.mass == MassType::lumped)
+    addDiagonal(inertia_.c0, lumpedMass()->getLocalViewDevice(Tpetra::Access::ReadOnly),
+                J.getLocalMatrixDevice());  // the owned rows, first on the overlap map
+  else if (inertia_.c0 != 0.0)
+    addConsistentMassMatrix<Dim>(inertia_.c0, particleGridMap_, entryDofs_, particles_.mass,
+                                 J.getLocalMatrixDevice());
+  auto xHost = xOverlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (std::size_t c = 0; c < contributions_.size(); ++c)
+    contributions_[c]->addJacobian(context(static_cast<int>(c)), constHost(xHost), J);
 }
 
 template <int Dim>

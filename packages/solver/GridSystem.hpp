@@ -167,11 +167,17 @@ class GridSystem : public ResidualModel {
   // f_int - f_ext (+ M a) + the contributions' terms at x (given on the overlap map),
   // without the constrained rows.
   void assembleResidual(const Vector& xOverlap, Vector& residual) const;
+  // This rank's terms of the residual into f (in its assembly phase); `a`: the
+  // consistent-mass acceleration, or null.
+  void addLocalResidual(const Teuchos::RCP<const Vector>& a, const Vector& xOverlap,
+                        FEMultiVector& f) const;
+  // This rank's terms of the Jacobian into J (in its assembly phase).
+  void addLocalJacobian(const Vector& xOverlap, FECrsMatrix& J) const;
   // The stress a frozen internal force uses, at the step start, into work_ once: the
   // particles' committed stress (startFromCommittedStress()) or the laws' at du = 0.
   void stressAtStepStart();
-  // The largest small-strain modulus of the laws, made on first use.  Collective.
-  double lawModulus() const;
+  // The largest of the laws' moduli of that kind, made on first use.  Collective.
+  double lawModulus(Modulus which = Modulus::largest) const;
   // The diagonal of a prescribed row, made on first use.  Collective.
   double constraintScale() const;
   // Owned local index and prescribed increment of every constrained unknown: the
@@ -238,7 +244,7 @@ class GridSystem : public ResidualModel {
   // on the overlap map.
   Teuchos::RCP<const Vector> stressX_, stressXOverlap_;
   GhostFaceDofs<> ghostDofs_;                      // ghostFaces_ as the kernels read them
-  mutable std::optional<double> lawModulus_;       // lawModulus()
+  mutable std::optional<double> lawModulus_[2];    // lawModulus(largest), lawModulus(young)
   mutable std::optional<double> constraintScale_;  // constraintScale()
   mutable std::optional<bool> anyConstrained_;     // anyConstrained()
   // constrainedRows(); reset by setTime() and commit().

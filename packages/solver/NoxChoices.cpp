@@ -100,6 +100,13 @@ void checkNoxList(const Teuchos::ParameterList& nox, const Teuchos::RCP<const Co
         Teuchos::rcp(new NOX::Thyra::Group(NOX::Thyra::Vector(guess), me, me->create_W_op(), lows,
                                            Teuchos::null, Teuchos::null, Teuchos::null));
     auto params = Teuchos::rcp(new Teuchos::ParameterList(nox));
+    // NOX reads it as an int at every solve; the probe is quiet, so it reads it here.
+    if (const auto* shown = params->sublist("Printing").getEntryPtr("Output Information");
+        shown && !shown->isType<int>() && !shown->isType<NOX::Utils::MsgType>())
+      throw InputError("Solver/NOX/Printing/Output Information",
+                       "must be an int (a sum of NOX::Utils' message types), not " +
+                           std::string(shown->getAny().typeName()) + " '" +
+                           Teuchos::toString(shown->getAny()) + "'");
     params->sublist("Printing").set("Output Information", NOX::Utils::Error);
     auto tests = Teuchos::rcp(new NOX::StatusTest::MaxIters(2));
     auto solver = NOX::Solver::buildSolver(group, tests, params);

@@ -289,6 +289,19 @@ def mutate_netcdf(rng, path, out):
     return r.returncode == 0
 
 
+def number_at(text, k):
+    """The value of the number in text around position k (ncdump's form: 0.05, 20LL, 3ULL)."""
+    begin, end = k, k
+    while begin > 0 and (text[begin - 1].isdigit() or text[begin - 1] in ".eE+-"):
+        begin -= 1
+    while end < len(text) and (text[end].isdigit() or text[end] in ".eE+-"):
+        end += 1
+    try:
+        return float(text[begin:end])
+    except ValueError:
+        return text[begin:end]
+
+
 def change_attribute(rng, path):
     """Changes one character of one global attribute's value (not the format version) through
     the file's text form, written back with ncgen; the attribute's name, or None."""
@@ -308,9 +321,15 @@ def change_attribute(rng, path):
     spots = strings if strings else digits
     if not spots:
         return None
-    k = rng.choice(spots)
-    pool = "0123456789" if text[k].isdigit() else "abcdefghijklmnopqrstuvwxyz"
-    text = text[:k] + rng.choice(pool.replace(text[k].lower(), "")) + text[k + 1:]
+    for _ in range(20):  # a digit past a double's precision leaves the value as it was
+        k = rng.choice(spots)
+        pool = "0123456789" if text[k].isdigit() else "abcdefghijklmnopqrstuvwxyz"
+        changed = text[:k] + rng.choice(pool.replace(text[k].lower(), "")) + text[k + 1:]
+        if spots is strings or number_at(text, k) != number_at(changed, k):
+            break
+    else:
+        return None
+    text = changed
     cdl = path + ".cdl"
     with open(cdl, "w") as f:
         f.write(text)
@@ -708,6 +727,8 @@ def judge(m, returncode, stdout, stderr, timed_out):
             return "an invalid value was accepted"
         if impm_lines:
             return "exit status %d with an error line: %s" % (returncode, impm_lines[0][:200])
+        if "no step to take, nothing written" in stdout and not os.path.exists(out):
+            return ""  # a restart at or past its Final Time
         return outputs_readable(out)
     if len(impm_lines) != 1:
         return "exit status %d with %d error lines" % (returncode, len(impm_lines))

@@ -1,4 +1,4 @@
-#include "Version.hpp"
+#include "io/Version.hpp"
 
 #include <mpi.h>
 #include <netcdf.h>
@@ -12,6 +12,11 @@
 
 namespace impm {
 
+std::string versionLine() {
+  return std::string("impm ") + IMPM_VERSION + " (commit " + IMPM_COMMIT + ", " +
+         (std::string(IMPM_BUILD_TYPE).empty() ? "default" : IMPM_BUILD_TYPE) + " build)";
+}
+
 std::string versionText() {
   char mpi[MPI_MAX_LIBRARY_VERSION_STRING] = {};
   int length = 0;
@@ -20,8 +25,7 @@ std::string versionText() {
   mpiName = mpiName.substr(0, mpiName.find_first_of(",\n"));  // the first clause only
   const std::string netcdf = nc_inq_libvers();                // "4.9.0 of <date> $"
   std::ostringstream s;
-  s << "impm " << IMPM_VERSION << " (commit " << IMPM_COMMIT << ", " << IMPM_BUILD_TYPE
-    << " build)\n"
+  s << versionLine() << "\n"
     << "  Trilinos " << TRILINOS_VERSION_STRING << ", Kokkos " << KOKKOS_VERSION / 10000 << "."
     << KOKKOS_VERSION / 100 % 100 << "." << KOKKOS_VERSION % 100 << " ("
     << Kokkos::DefaultExecutionSpace::name() << " execution space)\n"
