@@ -44,7 +44,9 @@ install_missing() {
 
 build() {
   if [ ! -f "$build_dir/CMakeCache.txt" ]; then
+    # Under CI a warning in impm's own code is an error (third-party headers are SYSTEM).
     cmake -S "$here" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release \
+      -DIMPM_WERROR="$([ -n "${CI:-}" ] && echo ON || echo OFF)" \
       -DCMAKE_CXX_COMPILER_LAUNCHER=ccache >/dev/null
   fi
   cmake --build "$build_dir" -j "$jobs"

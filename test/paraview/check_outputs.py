@@ -4,11 +4,15 @@ Run with pvbatch (under a virtual X server: Debian's ParaView needs a display). 
 file: the reader opens it, it has the expected time steps, points and cells, and the named
 arrays; the displaced particle positions match the particle CSV; a PNG is rendered (2-D
 gimp and cpdi runs: the deformed particle domains of <prefix>_domains.exo, warped by their
-corner displacements).
+corner displacements) with what a reader needs to use it: the time, a colour bar titled with
+the field's name and units, and the grid's extent as an outline; the check asks the render
+view for each of them, not only for a PNG.
 
-usage: pvbatch check_outputs.py OUTPUT_DIR PREFIX PNG [OUTPUT_EVERY [COLOUR [WIDTHxHEIGHT]]]
+usage: pvbatch check_outputs.py OUTPUT_DIR PREFIX PNG [OUTPUT_EVERY [COLOUR [WIDTHxHEIGHT
+                                                                           [UNITS]]]]
 (COLOUR: the element variable the picture is coloured by, stress_yy in 2-D by default;
-WIDTHxHEIGHT: the picture's size in pixels, 600x600 in 2-D by default)
+WIDTHxHEIGHT: the picture's size in pixels, 600x600 in 2-D by default; UNITS: those of the
+deck, for the colour bar's title, "deck units" by default: impm itself is unit-free)
 """
 
 import csv
@@ -16,8 +20,8 @@ import os
 import sys
 
 from paraview.simple import (ColorBy, CreateView, GetColorTransferFunction,
-                             GetDisplayProperties, MergeBlocks,
-                             OpenDataFile, Render, ResetCamera, SaveScreenshot, Show)
+                             GetDisplayProperties, GetScalarBar, MergeBlocks,
+                             OpenDataFile, Render, ResetCamera, SaveScreenshot, Show, Text)
 from paraview import servermanager
 
 out_dir, prefix, png = sys.argv[1], sys.argv[2], sys.argv[3]
@@ -98,19 +102,29 @@ view.ViewTime = times[-1]
 display = Show(shown, view)
 ColorBy(display, ("CELLS", colour))
 display.RescaleTransferFunctionToDataRange(True)
-if len(sys.argv) > 5:  # a chosen field: its range up to the 95th percentile, with a legend
+if len(sys.argv) > 5:  # a chosen field: its range up to the 95th percentile
     values = sorted(float(p[colour]) for p in table if colour in p)
     if values and values[int(0.95 * (len(values) - 1))] > values[0]:
         GetColorTransferFunction(colour).RescaleTransferFunction(
             values[0], values[int(0.95 * (len(values) - 1))])
-    display.SetScalarBarVisibility(view, True)
     representation = "Surface"
+# What a reader needs: the field and its units on a colour bar, the time, the grid's extent.
+units = sys.argv[7] if len(sys.argv) > 7 else "deck units"
+display.SetScalarBarVisibility(view, True)
+bar = GetScalarBar(GetColorTransferFunction(colour), view)
+bar.Title, bar.ComponentTitle = colour, "(%s)" % units
+clock = Text(Text="t = %.4g" % times[-1])
+clock_display = Show(clock, view)
+clock_display.WindowLocation = "Upper Left Corner"
+outline = Show(MergeBlocks(Input=grid_reader), view)
+outline.SetRepresentationType("Outline")
+outline.AmbientColor = outline.DiffuseColor = [0.85, 0.85, 0.85]
 display.SetRepresentationType(representation)
 display.PointSize = 6
 view.CameraParallelProjection = 1 if two_d else 0
 ResetCamera(view)
-if two_d:  # fit the bodies (not their bounding sphere) to the picture
-    x0, x1, y0, y1, _, _ = servermanager.Fetch(shown).GetBounds()
+if two_d:  # fit the grid, outlined (not its bounding sphere), to the picture
+    x0, x1, y0, y1, _, _ = grid.GetBounds()
     width, height = view.ViewSize
     view.CameraFocalPoint = [(x0 + x1) / 2, (y0 + y1) / 2, 0.0]
     view.CameraPosition = [(x0 + x1) / 2, (y0 + y1) / 2, 10.0 * max(x1 - x0, y1 - y0)]
@@ -119,6 +133,12 @@ if two_d:  # fit the bodies (not their bounding sphere) to the picture
 Render(view)
 SaveScreenshot(png, view)
 check(os.path.getsize(png) > 1000, "the rendered picture is empty")
+# The annotations are in the picture: the view holds them, visible.
+check(bar.Visibility == 1 and bar.Title == colour and units in bar.ComponentTitle,
+      "no colour bar titled %s (%s)" % (colour, units))
+check(clock_display.Visibility == 1 and clock.Text.startswith("t = "), "no time in the picture")
+check(outline.Visibility == 1 and outline.Representation == "Outline",
+      "no outline of the grid in the picture")
 
 for f in failures:
     print("FAIL:", f)
