@@ -16,9 +16,8 @@ else()
     string(APPEND IMPM_COMMIT "+changes")
   endif()
 endif()
-set(text "#pragma once\n// Written by cmake/Version.cmake at build time.\n"
-         "#define IMPM_VERSION \"${VERSION}\"\n#define IMPM_COMMIT \"${IMPM_COMMIT}\"\n")
-string(CONCAT text ${text})
+string(CONCAT text "#pragma once\n// Written by cmake/Version.cmake at build time.\n"
+       "#define IMPM_VERSION \"${VERSION}\"\n#define IMPM_COMMIT \"${IMPM_COMMIT}\"\n")
 if(EXISTS "${OUTPUT}")
   file(READ "${OUTPUT}" old)
 endif()
