@@ -44,12 +44,12 @@ Teuchos::ParameterList discretizationParameters() {
 
 Teuchos::ParameterList gridParameters() {
   Teuchos::ParameterList valid;
-  declareIntArray(valid, "Cells", {16}, {1, 2},
+  declareIntArray(valid, "Cells", {16}, {1, 2, 3},
                   "Number of cells along each direction; its length sets the dimension",
                   Bounds::atLeast(1), true);
-  declareDoubleArray(valid, "Length", {1.0}, {1, 2}, "Size of the grid along each direction",
+  declareDoubleArray(valid, "Length", {1.0}, {1, 2, 3}, "Size of the grid along each direction",
                      Bounds::positive(), true);
-  declareDoubleArray(valid, "Origin", {}, {0, 1, 2},
+  declareDoubleArray(valid, "Origin", {}, {0, 1, 2, 3},
                      "Position of the grid's lower corner (empty: the origin)");
   return valid;
 }

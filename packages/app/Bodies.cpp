@@ -7,6 +7,7 @@
 
 #include "app/shapes/ShapeFactory.hpp"
 #include "basis/CornerWeights.hpp"
+#include "core/Axes.hpp"
 #include "core/Diagnostics.hpp"
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
@@ -17,27 +18,18 @@ namespace impm {
 namespace {
 
 const std::vector<std::string> kVariables1D = {"x", "X", "t"};
-const std::vector<std::string> kVariables2D = {"x", "y", "X", "Y", "t"};
-const char* const kComponents[2] = {"x", "y"};
 
 // The formula variables of a Dim-D deck: current position, reference position, time.
 template <int Dim>
 const std::vector<std::string>& variables() {
-  static_assert(Dim == 1 || Dim == 2, "Bodies: the formula variables of this dimension");
-  if constexpr (Dim == 1)
-    return kVariables1D;
-  else
-    return kVariables2D;
+  static const std::vector<std::string> names = positionTimeVariables<Dim>();
+  return names;
 }
 
 // Values in the order of variables<Dim>().
 template <int Dim>
 std::array<double, 2 * Dim + 1> arguments(const double* x, const double* X, double t) {
-  static_assert(Dim == 1 || Dim == 2, "Bodies: the formula arguments of this dimension");
-  if constexpr (Dim == 1)
-    return {x[0], X[0], t};
-  else
-    return {x[0], x[1], X[0], X[1], t};
+  return positionTimeArguments<Dim>(x, X, t);
 }
 
 }  // namespace
@@ -70,10 +62,11 @@ Teuchos::ParameterList bodyValidParameters() {
   for (const auto& v : vectors) {
     declareFormula(valid, v.name, "0", kVariables1D,
                    std::string("1-D: ") + v.doc + ", a formula of x, X, t");
-    for (const char* c : kComponents)
+    for (int d = 0; d < 3; ++d)
       declareFormula(
-          valid, std::string(v.name) + " " + c, "0", kVariables2D,
-          std::string("2-D: ") + c + " component of the " + v.doc + ", a formula of x, y, X, Y, t");
+          valid, std::string(v.name) + " " + axisName(d), "0", anyPositionTimeVariables(),
+          std::string(d < 2 ? "2-D and 3-D: " : "3-D: ") + axisName(d) + " component of the " +
+              v.doc + ", a formula of x, y, X, Y, t (and z, Z in 3-D)");
   }
   return valid;
 }
@@ -90,20 +83,25 @@ Formula readFormula(const Teuchos::ParameterList& p, const std::string& name,
   }
 }
 
-// Vector formula: "Name" in 1-D, "Name x" and "Name y" in 2-D; the other form must be unset.
+// Vector formula: "Name" in 1-D, "Name x", "Name y" (, "Name z") in 2-D (3-D); the forms of the
+// other dimensions must be unset.
 template <int Dim>
 std::array<Formula, Dim> readVector(const Teuchos::ParameterList& p, const std::string& name,
                                     const std::string& path) {
-  static_assert(Dim == 1 || Dim == 2, "Bodies: the vector parameters of this dimension");
   std::array<Formula, Dim> f;
-  const std::string other = Dim == 1 ? name + " x" : name;
-  if (formulaText(p, other) != "0")
-    throw InputError(path + "/" + other,
-                     Dim == 1 ? "is for 2-D grids; this grid is 1-D (use '" + name + "')"
-                              : "is for 1-D grids; this grid is 2-D (use '" + name + " x' and '" +
-                                    name + " y')");
+  std::vector<std::string> unused;
+  if (Dim > 1)
+    unused.push_back(name);
+  for (int d = Dim == 1 ? 0 : Dim; d < 3; ++d)
+    unused.push_back(name + " " + axisName(d));
+  const std::string own =
+      Dim == 1 ? "'" + name + "'" : "'" + name + " x' to '" + name + " " + axisName(Dim - 1) + "'";
+  for (const auto& other : unused)
+    if (formulaText(p, other) != "0")
+      throw InputError(path + "/" + other, "is not for this deck's " + std::to_string(Dim) +
+                                               "-D grid (use " + own + ")");
   for (int d = 0; d < Dim; ++d)
-    f[d] = readFormula(p, Dim == 1 ? name : name + " " + kComponents[d], variables<Dim>(), path);
+    f[d] = readFormula(p, Dim == 1 ? name : name + " " + axisName(d), variables<Dim>(), path);
   return f;
 }
 
@@ -153,7 +151,7 @@ Bodies<Dim>::Bodies(const Teuchos::ParameterList& deck,
         msg << "the body [" << lo << ", " << hi << "] reaches outside the grid [" << grid.origin[d]
             << ", " << grid.upper(d) << "]";
         if (Dim > 1)
-          msg << " along " << kComponents[d];
+          msg << " along " << axisName(d);
         throw InputError(path + "/" + b.shape->placement(), msg.str());
       }
     }
@@ -164,9 +162,10 @@ Bodies<Dim>::Bodies(const Teuchos::ParameterList& deck,
     } else {
       for (const char* one : {"Section", "Distributed Load"})
         if (formulaText(p, one) != (std::string(one) == "Section" ? "1" : "0"))
-          throw InputError(path + "/" + one,
-                           "is for 1-D bars; 2-D bodies are plane strain "
-                           "with unit thickness (use Body Force x, y)");
+          throw InputError(path + "/" + one, Dim == 2
+                                                 ? "is for 1-D bars; 2-D bodies are plane strain "
+                                                   "with unit thickness (use Body Force x, y)"
+                                                 : "is for 1-D bars (use Body Force x, y, z)");
       b.section = Formula(1.0);
       b.load = Formula(0.0);
     }
@@ -447,5 +446,6 @@ void Bodies<Dim>::applyLoads(ParticleSet<Dim>& particles, double time) {
 
 template class Bodies<1>;
 template class Bodies<2>;
+template class Bodies<3>;
 
 }  // namespace impm

@@ -98,12 +98,17 @@ std::vector<std::shared_ptr<Contribution<Dim>>> createBoundaryConditions(
         continue;
       }
       throw InputError(path + "/Type",
-                       "tractions are for 2-D bodies; a 1-D end force is a Robin condition");
+                       Dim == 1 ? "tractions are for 2-D bodies; a 1-D end force is a Robin "
+                                  "condition"
+                                : "tractions on the faces of 3-D bodies are not written yet; "
+                                  "a body force or a prescribed displacement can load a 3-D "
+                                  "body");
     }
     if constexpr (Dim == 1)
       result.push_back(robinEnd(name, p, bodies, kinematics, taken));
     else
-      throw InputError(path + "/Type", "Robin ends are for 1-D bars; use Dirichlet on a 2-D grid");
+      throw InputError(path + "/Type", "Robin ends are for 1-D bars; use Dirichlet on a " +
+                                           std::to_string(Dim) + "-D grid");
   }
   return result;
 }
@@ -112,5 +117,7 @@ template std::vector<std::shared_ptr<Contribution<1>>> createBoundaryConditions<
     const Teuchos::ParameterList&, const Bodies<1>&, const GridGeometry<1>&, Method, Kinematics);
 template std::vector<std::shared_ptr<Contribution<2>>> createBoundaryConditions<2>(
     const Teuchos::ParameterList&, const Bodies<2>&, const GridGeometry<2>&, Method, Kinematics);
+template std::vector<std::shared_ptr<Contribution<3>>> createBoundaryConditions<3>(
+    const Teuchos::ParameterList&, const Bodies<3>&, const GridGeometry<3>&, Method, Kinematics);
 
 }  // namespace impm

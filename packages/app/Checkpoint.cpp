@@ -567,6 +567,7 @@ void CheckpointSeries::written(int step) {
                                          MultiVector&, const Teuchos::RCP<const Comm>&);
 IMPM_INSTANTIATE(1)
 IMPM_INSTANTIATE(2)
+IMPM_INSTANTIATE(3)
 #undef IMPM_INSTANTIATE
 
 }  // namespace impm

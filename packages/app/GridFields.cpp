@@ -113,5 +113,6 @@ void GridFields<Dim>::redistribute(const Teuchos::RCP<const Map>& nodeMap) {
 
 template class GridFields<1>;
 template class GridFields<2>;
+template class GridFields<3>;
 
 }  // namespace impm

@@ -5,13 +5,14 @@
 #include <algorithm>
 #include <limits>
 
+#include "core/Axes.hpp"
+
 namespace impm {
 
 template <int Dim>
 History<Dim>::History(const std::vector<std::string>& bodyNames,
                       const std::vector<std::string>& supportNames)
     : bodies_(bodyNames.size()), supports_(supportNames.size()) {
-  static_assert(Dim == 1 || Dim == 2, "History: the columns of this dimension");
   columns_ = {"step",
               "time",
               "dt",
@@ -25,15 +26,15 @@ History<Dim>::History(const std::vector<std::string>& bodyNames,
               "external_work",
               "energy_balance",
               "momentum"};
-  if (Dim == 2)
-    columns_.push_back("momentum_y");
-  for (const auto& b : bodyNames) {
-    for (const char* c : {"v_cm_", "x_min_", "x_max_"})
-      columns_.push_back(c + b);
-    if (Dim == 2)
-      for (const char* c : {"vy_cm_", "y_min_", "y_max_"})
+  // The x components keep their 1-D names (momentum, v_cm_<body>); y and z are named.
+  for (int d = 1; d < Dim; ++d)
+    columns_.push_back(std::string("momentum_") + axisName(d));
+  for (const auto& b : bodyNames)
+    for (int d = 0; d < Dim; ++d) {
+      const std::string v = d == 0 ? "v" : std::string("v") + axisName(d), x = axisName(d);
+      for (const std::string& c : {v + "_cm_", x + "_min_", x + "_max_"})
         columns_.push_back(c + b);
-  }
+    }
   for (std::string s : supportNames) {
     std::replace(s.begin(), s.end(), ' ', '_');
     columns_.push_back("reaction_" + s);
@@ -136,8 +137,8 @@ std::vector<double> History<Dim>::row(const StepRecord& r, double F0, double FL,
                              r.externalWork,
                              total - r.externalWork,
                              momentum[0]};
-  if (Dim == 2)
-    row.push_back(momentum[Dim - 1]);
+  for (int d = 1; d < Dim; ++d)
+    row.push_back(momentum[d]);
   for (std::size_t b = 0; b < bodies_; ++b)
     for (int d = 0; d < Dim; ++d) {
       const std::size_t k = b * Dim + d;
@@ -156,5 +157,6 @@ std::vector<double> History<Dim>::row(const StepRecord& r, double F0, double FL,
 
 template class History<1>;
 template class History<2>;
+template class History<3>;
 
 }  // namespace impm

@@ -62,5 +62,6 @@ bool LoadBalance<Dim>::afterStep(int step, NodeOwnership<Dim>& ownership,
 
 template class LoadBalance<1>;
 template class LoadBalance<2>;
+template class LoadBalance<3>;
 
 }  // namespace impm

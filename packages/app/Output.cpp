@@ -14,6 +14,21 @@
 
 namespace impm {
 
+namespace {
+
+// Along direction d, the offset of corner k of an Exodus BAR2, QUAD4 or HEX8 cell from its
+// lower corner: the lower face counter-clockwise (0, 1, 2, 3), then the upper one (4 ... 7).
+int exodusCornerOffset(int k, int d) {
+  const int inFace = k & 3;
+  if (d == 0)
+    return inFace == 1 || inFace == 2 ? 1 : 0;
+  if (d == 1)
+    return inFace >= 2 ? 1 : 0;
+  return k >> 2;
+}
+
+}  // namespace
+
 Teuchos::ParameterList outputValidParameters() {
   Teuchos::ParameterList valid;
   declareString(valid, "Directory", "output",
@@ -251,18 +266,15 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
     for (int d = 0; d < Dim; ++d)
       grid.coords[d].push_back(g.nodeCoord(d, idx[d]));
   }
-  grid.elementType = Dim == 1 ? "BAR2" : "QUAD4";
+  grid.elementType = Dim == 1 ? "BAR2" : (Dim == 2 ? "QUAD4" : "HEX8");
   grid.nodesPerElement = 1 << Dim;
   for (GlobalId cell = 0; cell < g.numCells(); ++cell) {
     int idx[Dim];
     g.cellIndex(cell, idx);
-    for (int k = 0; k < grid.nodesPerElement; ++k) {  // counter-clockwise in 2-D
+    for (int k = 0; k < grid.nodesPerElement; ++k) {
       int corner[Dim];
-      corner[0] = idx[0] + ((k == 1 || k == 2) ? 1 : 0);
-      if constexpr (Dim == 2)
-        corner[1] = idx[1] + (k >= 2 ? 1 : 0);
-      else
-        static_assert(Dim == 1, "Output: the grid's cells of this dimension");
+      for (int d = 0; d < Dim; ++d)
+        corner[d] = idx[d] + exodusCornerOffset(k, d);
       grid.connectivity.push_back(static_cast<int>(g.nodeId(corner) + 1));
     }
   }
@@ -280,14 +292,14 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
     points.connectivity.push_back(static_cast<int>(p + 1));
     points.elementIds.push_back(static_cast<int>(p + 1));
   }
-  const std::vector<std::string> displacement = {"displacementX", "displacementY"};
+  const std::vector<std::string> displacement = {"displacementX", "displacementY", "displacementZ"};
   const std::vector<std::string> nodal(displacement.begin(), displacement.begin() + Dim);
   std::vector<std::string> elements;
   for (const auto& c : exodusColumns_)
     elements.push_back(c.exodus);
   particleFile_ = std::make_unique<ExodusFile>(base + "_particles.exo", "impm particles", points,
                                                nodal, elements, globalNames, keep);
-  if (Dim == 2 && domains_ != Domains::none)
+  if (Dim == 2 && domains_ != Domains::none)  // 3-D domains: not yet written
     domainFile_ =
         std::make_unique<ExodusFile>(base + "_domains.exo", "impm particle domains",
                                      domainMesh(table), nodal, elements, globalNames, keep);
@@ -505,8 +517,10 @@ std::vector<std::string> Output<Dim>::files() const {
                                             const std::vector<TableColumn>&, TableRows);
 IMPM_INSTANTIATE(1)
 IMPM_INSTANTIATE(2)
+IMPM_INSTANTIATE(3)
 #undef IMPM_INSTANTIATE
 template class Output<1>;
 template class Output<2>;
+template class Output<3>;
 
 }  // namespace impm

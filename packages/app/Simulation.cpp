@@ -601,5 +601,6 @@ std::vector<std::string> Simulation<Dim>::finish(double finalTime,
 
 template class Simulation<1>;
 template class Simulation<2>;
+template class Simulation<3>;
 
 }  // namespace impm

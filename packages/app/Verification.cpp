@@ -2,11 +2,13 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
 #include <tuple>
 
+#include "core/Axes.hpp"
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
 
@@ -17,11 +19,11 @@ Teuchos::ParameterList verificationValidParameters() {
   declareString(valid, "Exact Displacement", "",
                 "Exact displacement u(X, t), a formula of the reference position X and time t; "
                 "when given, the particle RMS error is measured and reported (1-D)");
-  for (const char* c : {"x", "y"})
-    declareString(valid, std::string("Exact Displacement ") + c, "",
-                  std::string("2-D: ") + c +
-                      " component of the exact displacement, a formula "
-                      "of the reference position X, Y and time t (both components, or neither)");
+  for (int d = 0; d < 3; ++d)
+    declareString(valid, std::string("Exact Displacement ") + axisName(d), "",
+                  std::string(d < 2 ? "2-D and 3-D: " : "3-D: ") + axisName(d) +
+                      " component of the exact displacement, a formula of the reference "
+                      "position X, Y (, Z) and time t (every component, or none)");
   declareDouble(valid, "Maximum RMS Error", 0.0,
                 "Fail the run when the RMS displacement error exceeds this (0: no check)",
                 Bounds::nonNegative());
@@ -37,7 +39,8 @@ Teuchos::ParameterList verificationValidParameters() {
 Verification::Verification(const Teuchos::ParameterList& params)
     : hasExact_(!params.get<std::string>("Exact Displacement").empty() ||
                 !params.get<std::string>("Exact Displacement x").empty() ||
-                !params.get<std::string>("Exact Displacement y").empty()),
+                !params.get<std::string>("Exact Displacement y").empty() ||
+                !params.get<std::string>("Exact Displacement z").empty()),
       maxRms_(params.get<double>("Maximum RMS Error")),
       expectedF0_(params.get<double>("Expected F0")),
       expectedFL_(params.get<double>("Expected FL")),
@@ -51,12 +54,17 @@ Verification::Verification(const Teuchos::ParameterList& params)
   };
   if (!params.get<std::string>("Exact Displacement").empty()) {
     exact_.push_back(read("Exact Displacement", {"X", "t"}));
-  } else if (hasExact_) {
-    for (const char* c : {"x", "y"}) {
-      if (params.get<std::string>(std::string("Exact Displacement ") + c).empty())
-        throw InputError(std::string("Verification/Exact Displacement ") + c,
-                         "is missing: give both components");
-      exact_.push_back(read(std::string("Exact Displacement ") + c, {"X", "Y", "t"}));
+  } else if (hasExact_) {  // 3 components when z is given, else 2
+    const int components = params.get<std::string>("Exact Displacement z").empty() ? 2 : 3;
+    std::vector<std::string> variables;
+    for (int d = 0; d < components; ++d)
+      variables.push_back(referenceAxisName(d));
+    variables.push_back("t");
+    for (int d = 0; d < components; ++d) {
+      const std::string name = std::string("Exact Displacement ") + axisName(d);
+      if (params.get<std::string>(name).empty())
+        throw InputError("Verification/" + name, "is missing: give every component");
+      exact_.push_back(read(name, variables));
     }
   }
   if (maxRms_ > 0 && !hasExact_)
@@ -67,7 +75,6 @@ template <int Dim>
 VerificationResult Verification::check(const ParticleSet<Dim>& particles,
                                        const Teuchos::RCP<const Comm>& comm, double time, double F0,
                                        double FL) const {
-  static_assert(Dim == 1 || Dim == 2, "Verification: the exact solution's variables here");
   VerificationResult result;
   std::ostringstream line;
   line.precision(6);
@@ -75,16 +82,20 @@ VerificationResult Verification::check(const ParticleSet<Dim>& particles,
     if (static_cast<int>(exact_.size()) != Dim)
       throw InputError("Verification/Exact Displacement",
                        Dim == 1 ? "use 'Exact Displacement' on a 1-D grid"
-                                : "use 'Exact Displacement x' and 'Exact Displacement y' on a "
-                                  "2-D grid");
+                                : "use 'Exact Displacement x' to 'Exact Displacement " +
+                                      std::string(axisName(Dim - 1)) + "' on a " +
+                                      std::to_string(Dim) + "-D grid");
     auto X = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.X);
     auto u = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles.u);
     double local[2] = {0.0, 0.0}, global[2];
     for (std::size_t p = 0; p < particles.size(); ++p) {
       double e2 = 0.0;
+      std::array<double, Dim + 1> at;  // X, (Y, Z,) t
+      for (int d = 0; d < Dim; ++d)
+        at[d] = X(p, d);
+      at[Dim] = time;
       for (int d = 0; d < Dim; ++d) {
-        const double ed = u(p, d) - (Dim == 1 ? exact_[d](X(p, 0), time)
-                                              : exact_[d](X(p, 0), X(p, Dim - 1), time));
+        const double ed = u(p, d) - exact_[d](at);
         e2 += ed * ed;
       }
       const double e = std::sqrt(e2);
@@ -131,6 +142,9 @@ template VerificationResult Verification::check<1>(const ParticleSet<1>&,
                                                    const Teuchos::RCP<const Comm>&, double, double,
                                                    double) const;
 template VerificationResult Verification::check<2>(const ParticleSet<2>&,
+                                                   const Teuchos::RCP<const Comm>&, double, double,
+                                                   double) const;
+template VerificationResult Verification::check<3>(const ParticleSet<3>&,
                                                    const Teuchos::RCP<const Comm>&, double, double,
                                                    double) const;
 

@@ -47,6 +47,7 @@ void moveCorners(Kinematics kinematics, const GridGeometry<Dim>& grid,
                                                  const LocalValues&, const ParticleSet<D>&);
 IMPM_INSTANTIATE(1)
 IMPM_INSTANTIATE(2)
+IMPM_INSTANTIATE(3)
 #undef IMPM_INSTANTIATE
 
 }  // namespace impm

@@ -90,5 +90,6 @@ DomainDistortion domainDistortion(const ParticleSet<Dim, Space>& particles, cons
 
 template DomainDistortion domainDistortion<1, DefaultExecSpace>(const ParticleSet<1>&, const Comm&);
 template DomainDistortion domainDistortion<2, DefaultExecSpace>(const ParticleSet<2>&, const Comm&);
+template DomainDistortion domainDistortion<3, DefaultExecSpace>(const ParticleSet<3>&, const Comm&);
 
 }  // namespace impm

@@ -128,6 +128,7 @@ double bodyForceWork(const ParticleSet<Dim, Space>& particles,
       const ParticleSet<D>&, const ParticleSet<D>::Vectors&, bool, double, const Comm&);
 IMPM_INSTANTIATE(1)
 IMPM_INSTANTIATE(2)
+IMPM_INSTANTIATE(3)
 #undef IMPM_INSTANTIATE
 
 }  // namespace impm

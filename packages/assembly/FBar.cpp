@@ -252,6 +252,7 @@ void addFBarTangent(const ParticleGridMap<Dim, Space>& map, const EntryDofs<Spac
       const ParticleSet<D>::Scalars&, const Tangents<D>&, const LocalMatrix&);
 IMPM_INSTANTIATE(1)
 IMPM_INSTANTIATE(2)
+IMPM_INSTANTIATE(3)
 #undef IMPM_INSTANTIATE
 
 }  // namespace impm

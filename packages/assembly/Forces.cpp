@@ -129,6 +129,7 @@ void addStressRoundOffScale(const ParticleGridMap<Dim, Space>& map,
       const ParticleSet<D>::Tensors&, const LocalValuesMutable&);
 IMPM_INSTANTIATE(1)
 IMPM_INSTANTIATE(2)
+IMPM_INSTANTIATE(3)
 #undef IMPM_INSTANTIATE
 
 }  // namespace impm

@@ -214,6 +214,7 @@ void addGhostTangent(const GhostFaceDofs<Space>& faces, const LocalMatrix& K) {
                                                      const LocalMatrix&);
 IMPM_INSTANTIATE(1)
 IMPM_INSTANTIATE(2)
+IMPM_INSTANTIATE(3)
 #undef IMPM_INSTANTIATE
 
 }  // namespace impm

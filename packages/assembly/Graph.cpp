@@ -227,5 +227,9 @@ template Teuchos::RCP<FECrsGraph> buildGraph<2>(const ParticleGridMap<2>&, const
                                                 const DofMap<2>&,
                                                 const std::vector<std::pair<GO, GO>>&, NodeCoupling,
                                                 NodeAdjacency*, const NodeGroups&);
+template Teuchos::RCP<FECrsGraph> buildGraph<3>(const ParticleGridMap<3>&, const Kokkos::View<LO*>&,
+                                                const DofMap<3>&,
+                                                const std::vector<std::pair<GO, GO>>&, NodeCoupling,
+                                                NodeAdjacency*, const NodeGroups&);
 
 }  // namespace impm

@@ -89,6 +89,7 @@ void stressRelativeToStepStart(Kinematics kinematics,
       const Tangents<D>&, const ParticleSet<D>::Tensors&, const Tangents<D>&);
 IMPM_INSTANTIATE(1)
 IMPM_INSTANTIATE(2)
+IMPM_INSTANTIATE(3)
 #undef IMPM_INSTANTIATE
 
 }  // namespace impm

@@ -127,6 +127,7 @@ void gridToParticleVelocity(const ParticleGridMap<Dim, Space>& map,
       const LocalValues&, double, const ParticleSet<D>&);
 IMPM_INSTANTIATE(1)
 IMPM_INSTANTIATE(2)
+IMPM_INSTANTIATE(3)
 #undef IMPM_INSTANTIATE
 template void addDiagonal<DefaultExecSpace>(double, const LocalValues&, const LocalMatrix&);
 

@@ -76,6 +76,7 @@ void followDeformation(const ParticleSet<Dim, Space>& particles) {
   template void followDeformation<D, DefaultExecSpace>(const ParticleSet<D>&);
 IMPM_INSTANTIATE(1)
 IMPM_INSTANTIATE(2)
+IMPM_INSTANTIATE(3)
 #undef IMPM_INSTANTIATE
 
 }  // namespace impm

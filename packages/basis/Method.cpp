@@ -86,5 +86,7 @@ template ParticleGridMap<1> buildParticleGridMap(Method, const GridGeometry<1>&,
                                                  const ParticleSet<1>&);
 template ParticleGridMap<2> buildParticleGridMap(Method, const GridGeometry<2>&,
                                                  const ParticleSet<2>&);
+template ParticleGridMap<3> buildParticleGridMap(Method, const GridGeometry<3>&,
+                                                 const ParticleSet<3>&);
 
 }  // namespace impm

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "core/Axes.hpp"
 #include "core/Collective.hpp"
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
@@ -13,17 +14,18 @@ namespace impm {
 template <int Dim>
 Teuchos::ParameterList DirichletNodes<Dim>::validParameters() {
   Teuchos::ParameterList valid;
-  declareChoice(valid, "Face", "left", {"left", "right", "bottom", "top", "box"},
+  declareChoice(valid, "Face", "left", {"left", "right", "bottom", "top", "back", "front", "box"},
                 "The grid nodes held: those on a face of the grid (left: x = min, right: x = "
-                "max, bottom: y = min, top: y = max), or those inside Box",
+                "max, bottom: y = min, top: y = max, back: z = min, front: z = max), or those "
+                "inside Box",
                 true);
-  declareDoubleArray(valid, "Box", {0.0, 0.0, 0.0, 0.0}, {2, 4},
-                     "With Face = box: xmin, xmax (1-D) or xmin, xmax, ymin, ymax (2-D); nodes "
-                     "on its edges are inside");
-  declareChoice(valid, "Component", "x", {"x", "y"}, "The displacement component held", true);
-  declareFormula(valid, "Value", "0", {"x", "y", "t"},
-                 "Prescribed displacement g(x, y, t) at the node position (0: a roller or "
-                 "clamp); ramped with the load factor in static load steps");
+  declareDoubleArray(valid, "Box", {0.0, 0.0, 0.0, 0.0}, {2, 4, 6},
+                     "With Face = box: xmin, xmax (1-D), then ymin, ymax (2-D), then zmin, zmax "
+                     "(3-D); nodes on its faces are inside");
+  declareChoice(valid, "Component", "x", axisNames<3>(), "The displacement component held", true);
+  declareFormula(valid, "Value", "0", anyPointTimeVariables(),
+                 "Prescribed displacement g(x, y, t) (3-D: g(x, y, z, t)) at the node position "
+                 "(0: a roller or clamp); ramped with the load factor in static load steps");
   return valid;
 }
 
@@ -32,11 +34,14 @@ DirichletNodes<Dim>::DirichletNodes(const std::string& name, const Teuchos::Para
                                     const GridGeometry<Dim>& grid, double initialLoadFactor)
     : name_(name), grid_(grid), committedLoad_(initialLoadFactor) {
   const std::string path = "Boundary Conditions/" + name + "/";
-  component_ = params.get<std::string>("Component") == "x" ? 0 : 1;
+  const auto names = axisNames<3>();
+  component_ = static_cast<int>(
+      std::find(names.begin(), names.end(), params.get<std::string>("Component")) - names.begin());
   if (component_ >= Dim)
-    throw InputError(path + "Component", "a 1-D grid has only the x component");
+    throw InputError(path + "Component", "a " + std::to_string(Dim) + "-D grid has no " +
+                                             names[component_] + " component");
   try {
-    value_ = Formula(formulaText(params, "Value"), {"x", "y", "t"});
+    value_ = Formula(formulaText(params, "Value"), pointTimeVariables<Dim>());
   } catch (const InputError& e) {
     throw InputError(path + "Value", e.what());
   }
@@ -58,10 +63,14 @@ DirichletNodes<Dim>::DirichletNodes(const std::string& name, const Teuchos::Para
     }
     return;
   }
-  const int d = (face == "left" || face == "right") ? 0 : 1;
+  const std::array<std::string, 6> faces = {"left", "right", "bottom", "top", "back", "front"};
+  const int f = static_cast<int>(std::find(faces.begin(), faces.end(), face) - faces.begin());
+  const int d = f / 2;
   if (d >= Dim)
-    throw InputError(path + "Face", "a 1-D grid has only the left and right faces");
-  if (face == "left" || face == "bottom")
+    throw InputError(path + "Face", "a " + std::to_string(Dim) + "-D grid has no " + face +
+                                        " face (its faces are left, right" +
+                                        (Dim > 1 ? ", bottom, top" : "") + ")");
+  if (f % 2 == 0)
     hi_[d] = 0;
   else
     lo_[d] = grid.cells[d];
@@ -77,8 +86,10 @@ bool DirichletNodes<Dim>::selects(const int idx[Dim]) const {
 
 template <int Dim>
 double DirichletNodes<Dim>::prescribed(const double* x, double time, double loadFactor) const {
-  static_assert(Dim == 1 || Dim == 2, "DirichletNodes: the formula variables of this dimension");
-  return loadFactor * value_(x[0], Dim > 1 ? x[Dim - 1] : 0.0, time);
+  std::array<double, Dim + 1> at;  // x, (y, z,) t
+  std::copy(x, x + Dim, at.begin());
+  at[Dim] = time;
+  return loadFactor * value_(at);
 }
 
 template <int Dim>
@@ -171,5 +182,6 @@ void DirichletNodes<Dim>::restore(const std::vector<double>& state) {
 
 template class DirichletNodes<1>;
 template class DirichletNodes<2>;
+template class DirichletNodes<3>;
 
 }  // namespace impm

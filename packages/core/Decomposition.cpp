@@ -9,30 +9,41 @@ namespace impm {
 namespace {
 
 // Split `numRanks` into per-direction block counts proportional to the cell counts, so that
-// blocks are as square as the factorisation allows.  Never more blocks than cells.
+// blocks are as cubic as the factorisation allows: every factorisation px * py * ... = numRanks
+// with no more blocks than cells along a direction is tried, and the one whose block has the
+// least surface per volume (the communication per unit work), sum_d 1 / (block length)_d,
+// wins; ties go to the first found, fewer blocks along x first.
+template <int Dim>
+void tryBlocks(const GridGeometry<Dim>& g, int remaining, int d, std::array<int, Dim>& blocks,
+               std::array<int, Dim>& best, double& bestCost) {
+  if (d == Dim - 1) {
+    if (remaining > g.cells[d])
+      return;
+    blocks[d] = remaining;
+    double cost = 0.0;
+    for (int k = 0; k < Dim; ++k)
+      cost += blocks[k] / double(g.cells[k]);
+    if (cost < bestCost)
+      bestCost = cost, best = blocks;
+    return;
+  }
+  for (int b = 1; b <= std::min(remaining, g.cells[d]); ++b)
+    if (remaining % b == 0) {
+      blocks[d] = b;
+      tryBlocks<Dim>(g, remaining / b, d + 1, blocks, best, bestCost);
+    }
+}
+
 template <int Dim>
 std::array<int, Dim> chooseBlocks(const GridGeometry<Dim>& g, int numRanks) {
-  std::array<int, Dim> best;
+  std::array<int, Dim> best, blocks;
   best.fill(1);
-  static_assert(Dim == 1 || Dim == 2, "Decomposition: the block shapes of this dimension");
+  blocks.fill(1);
   if constexpr (Dim == 1) {
     best[0] = std::min(numRanks, g.cells[0]);
   } else {
     double bestCost = 1e300;
-    for (int px = 1; px <= numRanks; ++px) {
-      if (numRanks % px)
-        continue;
-      const int py = numRanks / px;
-      if (px > g.cells[0] || py > g.cells[1])
-        continue;
-      // Perimeter of a block relative to its area: the communication per unit work.
-      const double bx = double(g.cells[0]) / px, by = double(g.cells[1]) / py;
-      const double cost = (bx + by) / (bx * by);
-      if (cost < bestCost) {
-        bestCost = cost;
-        best = {px, py};
-      }
-    }
+    tryBlocks<Dim>(g, numRanks, 0, blocks, best, bestCost);
   }
   return best;
 }
@@ -145,5 +156,6 @@ std::vector<GlobalId> Decomposition<Dim>::owned(int rank, bool nodes) const {
 
 template class Decomposition<1>;
 template class Decomposition<2>;
+template class Decomposition<3>;
 
 }  // namespace impm

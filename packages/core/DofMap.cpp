@@ -194,5 +194,6 @@ void DofMap<Dim>::addHaloPatches(const GridGeometry<Dim>& grid,
 
 template class DofMap<1>;
 template class DofMap<2>;
+template class DofMap<3>;
 
 }  // namespace impm

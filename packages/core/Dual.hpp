@@ -37,6 +37,30 @@ KOKKOS_INLINE_FUNCTION double valueOf(const Dual<N>& x) {
   return x.v;
 }
 
+// The derivative directions of a scalar type (0 for double), and access to them: for rules
+// that set a result's derivatives themselves (an isotropic tensor function's, by the
+// Daleckii-Krein formula in material/LogStrain).
+template <class T>
+struct Directions {
+  static constexpr int value = 0;
+};
+template <int N>
+struct Directions<Dual<N>> {
+  static constexpr int value = N;
+};
+KOKKOS_INLINE_FUNCTION double derivativeOf(double /*x*/, int /*k*/) {
+  return 0.0;
+}
+template <int N>
+KOKKOS_INLINE_FUNCTION double derivativeOf(const Dual<N>& x, int k) {
+  return x.d[k];
+}
+KOKKOS_INLINE_FUNCTION void setDerivative(double& /*x*/, int /*k*/, double /*value*/) {}
+template <int N>
+KOKKOS_INLINE_FUNCTION void setDerivative(Dual<N>& x, int k, double value) {
+  x.d[k] = value;
+}
+
 // f(x) with f(x.v) = fv and f'(x.v) = dfdx.
 template <int N>
 KOKKOS_INLINE_FUNCTION Dual<N> chain(const Dual<N>& x, double fv, double dfdx) {

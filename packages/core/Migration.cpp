@@ -144,7 +144,9 @@ std::size_t migrateToOwners(ParticleSet<Dim>& particles, const Decomposition<Dim
 
 template std::size_t migrateParticles<1>(ParticleSet<1>&, const std::vector<int>&, const Comm&);
 template std::size_t migrateParticles<2>(ParticleSet<2>&, const std::vector<int>&, const Comm&);
+template std::size_t migrateParticles<3>(ParticleSet<3>&, const std::vector<int>&, const Comm&);
 template std::size_t migrateToOwners<1>(ParticleSet<1>&, const Decomposition<1>&, const Comm&);
 template std::size_t migrateToOwners<2>(ParticleSet<2>&, const Decomposition<2>&, const Comm&);
+template std::size_t migrateToOwners<3>(ParticleSet<3>&, const Decomposition<3>&, const Comm&);
 
 }  // namespace impm

@@ -21,5 +21,6 @@ void NodeOwnership<Dim>::repartition(Decomposition<Dim> decomposition) {
 
 template class NodeOwnership<1>;
 template class NodeOwnership<2>;
+template class NodeOwnership<3>;
 
 }  // namespace impm

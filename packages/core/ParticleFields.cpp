@@ -79,7 +79,6 @@ bool isFieldName(const std::string& name) {
 // doc/design.md.
 template <int Dim>
 BuiltinFields<Dim>::BuiltinFields() {
-  static_assert(Dim == 1 || Dim == 2, "BuiltinFields: the output columns of this dimension");
   const auto vector = FieldShape::vector;
   const auto tensor = FieldShape::tensor;
   const auto scalar = FieldShape::scalar;
@@ -87,12 +86,14 @@ BuiltinFields<Dim>::BuiltinFields() {
   id.columns = {{0, "id", ""}};
   X = field("X", vector, "reference position");
   X.columns = csvOnly(defaultColumns<Dim>("X", vector));
-  if (Dim == 2)
-    X.columns[0].csv = "X", X.columns[1].csv = "Y";
+  if (Dim > 1)  // X, Y, Z
+    for (int d = 0; d < Dim; ++d)
+      X.columns[d].csv = std::string(1, static_cast<char>(std::toupper(kAxes[d])));
   x = field("x", vector, "current position");
   x.columns = csvOnly(defaultColumns<Dim>("x", vector));
-  if (Dim == 2)
-    x.columns[0].csv = "x", x.columns[1].csv = "y";
+  if (Dim > 1)  // x, y, z
+    for (int d = 0; d < Dim; ++d)
+      x.columns[d].csv = std::string(1, kAxes[d]);
   u = field("u", vector, "displacement");
   u.columns = csvOnly(defaultColumns<Dim>("u", vector));
   strain = field("strain", scalar, "1-D: engineering strain F - 1");
@@ -103,13 +104,17 @@ BuiltinFields<Dim>::BuiltinFields() {
   stress.columns = defaultColumns<Dim>("stress", tensor);
   if (Dim == 2)  // symmetric: xx, yy, xy
     stress.columns = {stress.columns[0], stress.columns[3], stress.columns[1]};
+  if (Dim == 3) {  // symmetric: xx, yy, zz, xy, yz, xz
+    const auto& c = stress.columns;
+    stress.columns = {c[0], c[4], c[8], c[1], c[5], c[2]};
+  }
   stressZZ = field("stress_zz", scalar, "2-D: out-of-plane Cauchy stress (plane strain)");
   stressZZ.checkpoint = stressZZ.migrate = false;
   if (Dim == 2)
     stressZZ.columns = defaultColumns<Dim>("stress_zz", scalar);
-  J = field("J", scalar, "2-D: volume ratio det F");
+  J = field("J", scalar, "2-D and 3-D: volume ratio det F");
   J.checkpoint = J.migrate = false;
-  if (Dim == 2)
+  if (Dim > 1)
     J.columns = defaultColumns<Dim>("J", scalar);
   volume = field("volume", scalar, "current volume V_p (1-D: length)");
   volume.columns = defaultColumns<Dim>("volume", scalar);
@@ -121,8 +126,8 @@ BuiltinFields<Dim>::BuiltinFields() {
   a.columns = defaultColumns<Dim>("a", vector);
   for (int d = 0; d < Dim; ++d)
     a.columns[d].exodus = std::string("acceleration") + static_cast<char>(std::toupper(kAxes[d]));
-  F = field("F", tensor, "2-D: deformation gradient");
-  if (Dim == 2)
+  F = field("F", tensor, "2-D and 3-D: deformation gradient");
+  if (Dim > 1)
     F.columns = defaultColumns<Dim>("F", tensor);
   mass = field("mass", scalar, "mass m_p");
   mass.columns = defaultColumns<Dim>("mass", scalar);
@@ -131,10 +136,10 @@ BuiltinFields<Dim>::BuiltinFields() {
     section.columns = defaultColumns<Dim>("section", scalar);
   body = field("body", scalar, "index of the body in the deck");
   body.columns = defaultColumns<Dim>("body", scalar);
-  // Column k of the domain tensor is the half-vector r_k: r1_x, r1_y, r2_x, r2_y.
-  domain = field("domain", tensor, "2-D: the particle domain's half-vectors r1, r2");
-  domain0 = field("domain0", tensor, "2-D: the reference half-vectors r01, r02");
-  if (Dim == 2)
+  // Column k of the domain tensor is the half-vector r_k: r1_x, r1_y, r2_x, r2_y (2-D).
+  domain = field("domain", tensor, "2-D and 3-D: the particle domain's half-vectors r1, r2 (r3)");
+  domain0 = field("domain0", tensor, "2-D and 3-D: the reference half-vectors r01, r02 (r03)");
+  if (Dim > 1)
     for (int k = 0; k < Dim; ++k)
       for (int c = 0; c < Dim; ++c) {
         const std::string axis(1, kAxes[c]);
@@ -155,9 +160,12 @@ const BuiltinFields<Dim>& builtinFields() {
 
 template std::vector<OutputColumn> defaultColumns<1>(const std::string&, FieldShape);
 template std::vector<OutputColumn> defaultColumns<2>(const std::string&, FieldShape);
+template std::vector<OutputColumn> defaultColumns<3>(const std::string&, FieldShape);
 template struct BuiltinFields<1>;
 template struct BuiltinFields<2>;
+template struct BuiltinFields<3>;
 template const BuiltinFields<1>& builtinFields<1>();
 template const BuiltinFields<2>& builtinFields<2>();
+template const BuiltinFields<3>& builtinFields<3>();
 
 }  // namespace impm

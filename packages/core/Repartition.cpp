@@ -57,8 +57,9 @@ CellPartition<Dim> repartitionCells(const Decomposition<Dim>& current,
       centre[d].push_back(grid.origin[d] + (idx[d] + 0.5) * grid.spacing[d]);
   }
   const double* y = Dim > 1 ? centre[Dim > 1 ? 1 : 0].data() : nullptr;
-  CellAdapter adapter(static_cast<int>(cells.size()), cells.data(), centre[0].data(), y, nullptr, 1,
-                      1, 1, true, weight.data(), 1);
+  const double* z = Dim > 2 ? centre[Dim > 2 ? 2 : 0].data() : nullptr;
+  CellAdapter adapter(static_cast<int>(cells.size()), cells.data(), centre[0].data(), y, z, 1, 1, 1,
+                      true, weight.data(), 1);
   Teuchos::ParameterList params;
   params.set("algorithm", "multijagged");
   params.set("num_global_parts", comm->getSize());
@@ -88,6 +89,8 @@ CellPartition<Dim> repartitionCells(const Decomposition<Dim>& current,
 template CellPartition<1> repartitionCells<1>(const Decomposition<1>&, const ParticleSet<1>&,
                                               const Teuchos::RCP<const Comm>&);
 template CellPartition<2> repartitionCells<2>(const Decomposition<2>&, const ParticleSet<2>&,
+                                              const Teuchos::RCP<const Comm>&);
+template CellPartition<3> repartitionCells<3>(const Decomposition<3>&, const ParticleSet<3>&,
                                               const Teuchos::RCP<const Comm>&);
 
 }  // namespace impm

@@ -9,11 +9,15 @@ namespace impm {
 
 template <int Dim>
 KOKKOS_INLINE_FUNCTION double determinant(const double a[Dim][Dim]) {
-  static_assert(Dim >= 1 && Dim <= 2, "determinant: add the formula of this dimension");
+  static_assert(Dim >= 1 && Dim <= 3, "determinant: add the formula of this dimension");
   if constexpr (Dim == 1)
     return a[0][0];
-  else
+  else if constexpr (Dim == 2)
     return a[0][0] * a[1][1] - a[0][1] * a[1][0];
+  else
+    return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+           a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+           a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
 }
 
 // The determinant of row p of a view of Dim x Dim matrices (F(p, a, b)).
@@ -29,12 +33,19 @@ KOKKOS_INLINE_FUNCTION double determinant(const View& a, int p) {
 // inv = a^-1, given det = determinant(a) (non-zero).
 template <int Dim>
 KOKKOS_INLINE_FUNCTION void inverse(const double a[Dim][Dim], double det, double inv[Dim][Dim]) {
-  static_assert(Dim >= 1 && Dim <= 2, "inverse: add the formula of this dimension");
+  static_assert(Dim >= 1 && Dim <= 3, "inverse: add the formula of this dimension");
   if constexpr (Dim == 1) {
     inv[0][0] = 1.0 / det;
-  } else {
+  } else if constexpr (Dim == 2) {
     inv[0][0] = a[1][1] / det, inv[0][1] = -a[0][1] / det;
     inv[1][0] = -a[1][0] / det, inv[1][1] = a[0][0] / det;
+  } else {
+    // The adjugate: inv_ij = cofactor_ji / det, with cyclic indices.
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        const int j1 = (j + 1) % 3, j2 = (j + 2) % 3, i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+        inv[i][j] = (a[j1][i1] * a[j2][i2] - a[j1][i2] * a[j2][i1]) / det;
+      }
   }
 }
 

@@ -74,7 +74,7 @@ struct DruckerPragerLaw {
   }
 
   template <class T>
-  KOKKOS_INLINE_FUNCTION static PlasticUpdate<T> returnMap(const T F[2][2], const PlasticState& n,
+  KOKKOS_INLINE_FUNCTION static PlasticUpdate<T> returnMap(const T F[3][3], const PlasticState& n,
                                                            const Parameters& k) {
     const Trial<T> t = trialOf(F, n, k.mu, k.lambda);
     const auto& s = t.s;
@@ -91,8 +91,8 @@ struct DruckerPragerLaw {
       const T dGamma = (root + k.eta * p - k.xi * k.cohesion) / (G + K * k.eta * k.etaBar);
       r.tau = plusIdentity(scaled(s, 1.0 - G * dGamma / root), p - K * k.etaBar * dGamma);
     } else {  // the apex
-      r.tau = {T(k.xi * k.cohesion / k.eta), T(k.xi * k.cohesion / k.eta), T(0.0),
-               T(k.xi * k.cohesion / k.eta)};
+      const T apex(k.xi * k.cohesion / k.eta);
+      r.tau = {apex, apex, apex, T(0.0), T(0.0), T(0.0)};
     }
     const T pNew = trace(r.tau) / 3.0;
     r.elasticStrain = plusIdentity(scaled(deviator(r.tau), 0.5 / G), pNew / (3.0 * K));

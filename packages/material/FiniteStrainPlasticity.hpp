@@ -1,5 +1,5 @@
 #pragma once
-// Elastoplastic laws at finite strain in plane strain, on Hencky elasticity and the
+// Elastoplastic laws at finite strain, 2-D (plane strain) and 3-D, on Hencky elasticity and the
 // exponential map (doc/theory.md, "Laws with history"): F = F_e F_p, eps_e = (1/2) ln b_e,
 // tau = D : eps_e, and a return map on the logarithmic strain that each Law supplies
 // (J2Law: von Mises; DruckerPragerLaw).  FiniteStrainPlasticity<Law> runs a Law through the
@@ -12,7 +12,9 @@
 //                              and after a restart alike (doc/design.md);
 //   equivalent_plastic_strain  alpha (written);
 //   plastic_dissipation        the energy dissipated per unit reference volume (written).
-// The tangent is the exact derivative of the return (dual numbers): the algorithmic tangent.
+// The tangent is the exact derivative of the return (dual numbers along the Dim x Dim
+// components of F): the algorithmic tangent.  A Law's return map acts on the 3 x 3 F (F_zz = 1
+// in 2-D), so that one return serves both dimensions.
 //
 // A Law provides: model(); declare(valid) its parameters beyond E and nu; Parameters
 // read(params, Lame); returnMap<T>(F, state, parameters) -> PlasticUpdate<T>; and
@@ -28,28 +30,28 @@ namespace impm {
 
 // The committed state of a particle.
 struct PlasticState {
-  PlaneSym<double> metric;  // C_p^-1
+  Sym<double> metric;  // C_p^-1
   double alpha, dissipation;
 };
 
 // What a return map gives: the stress and the state at the end of the step.
 template <class T>
 struct PlasticUpdate {
-  PlaneSym<T> tau;            // Kirchhoff stress
-  PlaneSym<T> elasticStrain;  // eps_e = (1/2) ln b_e
-  T alpha;                    // equivalent plastic strain
-  T dissipation;              // dissipated energy per unit reference volume
+  Sym<T> tau;            // Kirchhoff stress
+  Sym<T> elasticStrain;  // eps_e = (1/2) ln b_e
+  T alpha;               // equivalent plastic strain
+  T dissipation;         // dissipated energy per unit reference volume
 };
 
 // The trial state of a step: the elastic strain and the Kirchhoff stress if the step were
 // elastic, and the stress deviator.
 template <class T>
 struct Trial {
-  PlaneSym<T> eps, tau, s;
+  Sym<T> eps, tau, s;
 };
 
 template <class T>
-KOKKOS_INLINE_FUNCTION Trial<T> trialOf(const T F[2][2], const PlasticState& n, double mu,
+KOKKOS_INLINE_FUNCTION Trial<T> trialOf(const T F[3][3], const PlasticState& n, double mu,
                                         double lambda) {
   Trial<T> t;
   t.eps = trialElasticStrain(F, n.metric);
@@ -68,24 +70,21 @@ KOKKOS_INLINE_FUNCTION PlasticUpdate<T> elasticUpdate(const Trial<T>& t, const P
 // by value (its derivative is not needed: alpha enters the stress only through hardening,
 // which the laws that use it differentiate themselves).
 template <class T>
-KOKKOS_INLINE_FUNCTION double equivalentIncrement(const PlaneSym<T>& d) {
+KOKKOS_INLINE_FUNCTION double equivalentIncrement(const Sym<T>& d) {
   return Kokkos::Experimental::sqrt(2.0 / 3.0 * valueOf(squaredNorm(d)));
 }
 
-template <class T>
-KOKKOS_INLINE_FUNCTION PlaneSym<T> difference(const PlaneSym<T>& a, const PlaneSym<T>& b) {
-  return {a.xx - b.xx, a.yy - b.yy, a.xy - b.xy, a.zz - b.zz};
-}
-
-// tau : d, the work of a stress on a strain increment.
-template <class T>
-KOKKOS_INLINE_FUNCTION T contraction(const PlaneSym<T>& a, const PlaneSym<T>& b) {
-  return a.xx * b.xx + a.yy * b.yy + a.zz * b.zz + 2.0 * a.xy * b.xy;
-}
-
-template <class Law>
-class FiniteStrainPlasticity : public Material<2> {
+template <int Dim, class Law>
+class FiniteStrainPlasticity : public Material<Dim> {
  public:
+  using Base = Material<Dim>;
+  using typename Base::Evaluation;
+  using typename Base::Scalars;
+  using typename Base::Tangents;
+  using typename Base::Tensors;
+  using typename Base::Variable;
+  using ExecutionSpace = typename Base::ExecutionSpace;
+  static constexpr int dimension = Dim;
   using Parameters = typename Law::Parameters;
   static const char* model() { return Law::model(); }
   static Teuchos::ParameterList validParameters();

@@ -32,7 +32,7 @@ struct J2Law {
   }
 
   template <class T>
-  KOKKOS_INLINE_FUNCTION static PlasticUpdate<T> returnMap(const T F[2][2], const PlasticState& n,
+  KOKKOS_INLINE_FUNCTION static PlasticUpdate<T> returnMap(const T F[3][3], const PlasticState& n,
                                                            const Parameters& k) {
     const Trial<T> t = trialOf(F, n, k.mu, k.lambda);
     const auto& s = t.s;

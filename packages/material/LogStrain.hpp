@@ -1,78 +1,30 @@
 #pragma once
-// The kinematics of the finite-strain laws in plane strain (doc/theory.md, "Hencky
-// elasticity and the exponential map"): symmetric 3 x 3 tensors with no out-of-plane shear,
-// the logarithm and the exponential of such a tensor, the Hencky stress of a logarithmic
-// strain, and the first Piola stress of a Kirchhoff stress.  Written on a scalar type T,
-// double or Dual<4>, so that one code gives the stress and its exact derivative.
+// The kinematics of the finite-strain laws (doc/theory.md, "Hencky elasticity and the
+// exponential map"): the logarithm and the exponential of a symmetric 3 x 3 tensor, with
+// derivatives, the Hencky stress of a logarithmic strain, and the trial and plastic states
+// of the exponential map.  Written on a scalar type T, double or Dual<N>, so that one code
+// gives the stress and its exact derivative.
 //
-// ln and exp are isotropic tensor functions: f(B) = sum_i f(lambda_i) n_i (x) n_i.  On the
-// in-plane block, with m the mean and r the half-difference of the two eigenvalues,
-//   f(B) = g0 I + g1 (B - m I),  g0 = (f(m + r) + f(m - r)) / 2,  g1 = (f(m + r) - f(m - r)) / (2
-//   r),
-// and g0, g1 are even in r: near coincident eigenvalues (r -> 0, where eigenvectors are
-// undefined and their derivatives blow up) they are evaluated by their Taylor series in r^2,
-// so f(B) and its derivative are smooth and exact there, the reference state included.
+// ln and exp are isotropic tensor functions: f(B) = sum_i f(lambda_i) n_i (x) n_i.  Their
+// derivative along dB is the Daleckii-Krein formula: in the eigenbasis of B,
+//   (d f(B)[dB])_ij = f[lambda_i, lambda_j] (Q^T dB Q)_ij,
+// with the divided difference f[a, b] = (f(a) - f(b)) / (a - b), and f'(a) at a = b.  Written
+// as f[m + r, m - r] with m the mean and r the half-difference, it is even in r, and near
+// coincident eigenvalues (r -> 0, where the eigenvectors are undefined) it is evaluated by its
+// Taylor series f'(m) + f'''(m) r^2 / 6: f(B) and its derivative are smooth and exact there,
+// the reference state (three equal eigenvalues) included.
+//
+// A plane tensor (yz = xz = 0, derivatives included: every tensor of a 2-D law) takes the
+// closed form of its in-plane block, f(B) = g0 I + g1 (B - m I) with g0 = (f(m + r) + f(m -
+// r)) / 2 and g1 = f[m + r, m - r], and f(B_zz); any other the eigenvectors of B by Jacobi
+// rotations (material/SymmetricEigen).
 
-#include "core/Dual.hpp"
+#include <type_traits>
+
+#include "material/SymTensor.hpp"
+#include "material/SymmetricEigen.hpp"
 
 namespace impm {
-
-// The finite-strain laws' derivatives by dual numbers (the plastic laws' return map; the
-// unit tests' reference for Hencky's written-out tangent).
-using Dual4 = Dual<4>;  // derivatives along the four in-plane components of F, (a, b) -> 2a + b
-
-// F as dual numbers: each component its own direction.
-KOKKOS_INLINE_FUNCTION void seedDeformation(const double F[2][2], Dual4 Fd[2][2]) {
-  for (int a = 0; a < 2; ++a)
-    for (int b = 0; b < 2; ++b)
-      Fd[a][b] = Dual4::variable(F[a][b], 2 * a + b);
-}
-
-// P and A = dP/dF from a dual first Piola stress.
-KOKKOS_INLINE_FUNCTION void unpackPiola(const Dual4 P[2][2], double Pv[2][2],
-                                        double A[2][2][2][2]) {
-  for (int a = 0; a < 2; ++a)
-    for (int b = 0; b < 2; ++b) {
-      Pv[a][b] = P[a][b].v;
-      for (int c = 0; c < 2; ++c)
-        for (int d = 0; d < 2; ++d)
-          A[a][b][c][d] = P[a][b].d[2 * c + d];
-    }
-}
-
-// A symmetric 3 x 3 tensor of plane strain: xz = yz = 0.
-template <class T>
-struct PlaneSym {
-  T xx, yy, xy, zz;
-};
-
-template <class T>
-KOKKOS_INLINE_FUNCTION T trace(const PlaneSym<T>& a) {
-  return a.xx + a.yy + a.zz;
-}
-
-// a : a
-template <class T>
-KOKKOS_INLINE_FUNCTION T squaredNorm(const PlaneSym<T>& a) {
-  return a.xx * a.xx + a.yy * a.yy + a.zz * a.zz + 2.0 * a.xy * a.xy;
-}
-
-// a + s I
-template <class T, class S>
-KOKKOS_INLINE_FUNCTION PlaneSym<T> plusIdentity(const PlaneSym<T>& a, const S& s) {
-  return {a.xx + s, a.yy + s, a.xy, a.zz + s};
-}
-
-template <class T, class S>
-KOKKOS_INLINE_FUNCTION PlaneSym<T> scaled(const PlaneSym<T>& a, const S& s) {
-  return {a.xx * s, a.yy * s, a.xy * s, a.zz * s};
-}
-
-// The deviatoric part a - tr(a)/3 I.
-template <class T>
-KOKKOS_INLINE_FUNCTION PlaneSym<T> deviator(const PlaneSym<T>& a) {
-  return plusIdentity(a, -trace(a) / 3.0);
-}
 
 // ln x, with the difference ln(lo + 2r) - ln(lo) computed without cancellation.
 struct Logarithm {
@@ -109,9 +61,33 @@ struct Exponential {
   KOKKOS_INLINE_FUNCTION static bool nearlyEqual(double /*m*/, double r) { return r < 1e-5; }
 };
 
-// f(B) for the isotropic function Fn (Logarithm: B symmetric positive definite).
+// The divided difference f[a, b] of Fn (above), by value.
+template <class Fn>
+KOKKOS_INLINE_FUNCTION double dividedDifference(double a, double b) {
+  const double m = 0.5 * (a + b), r = 0.5 * Kokkos::Experimental::fabs(a - b);
+  if (Fn::nearlyEqual(m, r)) {
+    double d1, d2, d3;
+    Fn::derivatives(m, d1, d2, d3);
+    return d1 + d3 * r * r / 6.0;
+  }
+  const double lo = a < b ? a : b;
+  return Fn::difference(lo, 2.0 * r) / (2.0 * r);
+}
+
+// True when a has no out-of-plane shear, in value and in every derivative.
+template <class T>
+KOKKOS_INLINE_FUNCTION bool isPlane(const Sym<T>& a) {
+  if (valueOf(a.yz) != 0.0 || valueOf(a.xz) != 0.0)
+    return false;
+  for (int k = 0; k < Directions<T>::value; ++k)
+    if (derivativeOf(a.yz, k) != 0.0 || derivativeOf(a.xz, k) != 0.0)
+      return false;
+  return true;
+}
+
+// f(B) of a plane B: the in-plane block's closed form, and f(B_zz).
 template <class Fn, class T>
-KOKKOS_INLINE_FUNCTION PlaneSym<T> isotropicFunction(const PlaneSym<T>& B) {
+KOKKOS_INLINE_FUNCTION Sym<T> planeFunction(const Sym<T>& B) {
   const T m = 0.5 * (B.xx + B.yy), h = 0.5 * (B.xx - B.yy);
   const T s = h * h + B.xy * B.xy;  // r^2
   T g0, g1;
@@ -128,7 +104,73 @@ KOKKOS_INLINE_FUNCTION PlaneSym<T> isotropicFunction(const PlaneSym<T>& B) {
     g0 = Fn::f(lo) + 0.5 * diff;
     g1 = diff / (2.0 * r);
   }
-  return {g0 + g1 * h, g0 - g1 * h, g1 * B.xy, Fn::f(B.zz)};
+  return {g0 + g1 * h, g0 - g1 * h, Fn::f(B.zz), g1 * B.xy, T(0.0), T(0.0)};
+}
+
+// The derivative of f(B) along any dB, for a B fixed once: Daleckii-Krein (above).
+template <class Fn>
+class IsotropicDerivative {
+ public:
+  KOKKOS_INLINE_FUNCTION explicit IsotropicDerivative(const Sym<double>& B) {
+    symmetricEigen(B, lambda_, Q_);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        G_[i][j] = dividedDifference<Fn>(lambda_[i], lambda_[j]);
+  }
+  // f(B) = Q diag(f(lambda)) Q^T.
+  KOKKOS_INLINE_FUNCTION Sym<double> value() const {
+    double f[3], m[3][3];
+    for (int k = 0; k < 3; ++k)
+      f[k] = Fn::f(lambda_[k]);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        m[i][j] =
+            Q_[i][0] * f[0] * Q_[j][0] + Q_[i][1] * f[1] * Q_[j][1] + Q_[i][2] * f[2] * Q_[j][2];
+    return symmetricOf(m);
+  }
+  // Q (G o (Q^T dB Q)) Q^T.
+  KOKKOS_INLINE_FUNCTION Sym<double> along(const Sym<double>& dB) const {
+    double D[3][3], E[3][3];
+    for (int a = 0; a < 3; ++a)  // E = dB Q
+      for (int k = 0; k < 3; ++k)
+        E[a][k] =
+            entry(dB, a, 0) * Q_[0][k] + entry(dB, a, 1) * Q_[1][k] + entry(dB, a, 2) * Q_[2][k];
+    for (int i = 0; i < 3; ++i)  // D = G o (Q^T E)
+      for (int k = 0; k < 3; ++k)
+        D[i][k] = G_[i][k] * (Q_[0][i] * E[0][k] + Q_[1][i] * E[1][k] + Q_[2][i] * E[2][k]);
+    for (int a = 0; a < 3; ++a)  // E = Q D
+      for (int k = 0; k < 3; ++k)
+        E[a][k] = Q_[a][0] * D[0][k] + Q_[a][1] * D[1][k] + Q_[a][2] * D[2][k];
+    double m[3][3];
+    for (int a = 0; a < 3; ++a)  // E Q^T
+      for (int b = 0; b < 3; ++b)
+        m[a][b] = E[a][0] * Q_[b][0] + E[a][1] * Q_[b][1] + E[a][2] * Q_[b][2];
+    return symmetricOf(m);
+  }
+
+ private:
+  double lambda_[3], Q_[3][3], G_[3][3];
+};
+
+// f(B) for the isotropic function Fn (Logarithm: B symmetric positive definite).
+template <class Fn, class T>
+KOKKOS_INLINE_FUNCTION Sym<T> isotropicFunction(const Sym<T>& B) {
+  if (isPlane(B))
+    return planeFunction<Fn>(B);
+  const Sym<double> Bv{valueOf(B.xx), valueOf(B.yy), valueOf(B.zz),
+                       valueOf(B.xy), valueOf(B.yz), valueOf(B.xz)};
+  const IsotropicDerivative<Fn> derivative(Bv);
+  const Sym<double> v = derivative.value();
+  Sym<T> out{T(v.xx), T(v.yy), T(v.zz), T(v.xy), T(v.yz), T(v.xz)};
+  for (int k = 0; k < Directions<T>::value; ++k) {
+    const Sym<double> dB{derivativeOf(B.xx, k), derivativeOf(B.yy, k), derivativeOf(B.zz, k),
+                         derivativeOf(B.xy, k), derivativeOf(B.yz, k), derivativeOf(B.xz, k)};
+    const Sym<double> d = derivative.along(dB);
+    setDerivative(out.xx, k, d.xx), setDerivative(out.yy, k, d.yy);
+    setDerivative(out.zz, k, d.zz), setDerivative(out.xy, k, d.xy);
+    setDerivative(out.yz, k, d.yz), setDerivative(out.xz, k, d.xz);
+  }
+  return out;
 }
 
 // phi(q) = atanh(x)/x and phi'(q), x = sqrt(q) in [0, 1): for ln, g1 = phi(r^2/m^2)/m.  By
@@ -148,16 +190,16 @@ KOKKOS_INLINE_FUNCTION void atanhRatio(double q, double& phi, double& dphi) {
   dphi = (x / (1.0 - q) - t) / (2.0 * q * x);
 }
 
-// The derivative of ln B (B symmetric positive definite) along any dB.  On the in-plane
-// block ln B = g0 I + g1 (B - m I) with g0 = (1/2) ln det and g1 = phi(s/m^2)/m, functions
-// of the mean m and of s = r^2 (doc/theory.md); so
+// The derivative of ln B along plane directions dB of a plane B (2-D laws), in closed form:
+// on the in-plane block ln B = g0 I + g1 (B - m I) with g0 = (1/2) ln det and g1 =
+// phi(s/m^2)/m, functions of the mean m and of s = r^2 (doc/theory.md); so
 //   d ln B = dg0 I + dg1 (B - m I) + g1 (dB - dm I),
 //   dg0 = (m dm - ds/2)/det,  dg1 = -dm/det + phi'(s/m^2) ds/m^3,
-// smooth where the eigenvalues coincide (no division by r).  The zz entry: dB_zz / B_zz.
-// What depends on B alone is computed once, for the four directions of a tangent.
-class LogarithmDerivative {
+// smooth where the eigenvalues coincide (no division by r); and dB_zz / B_zz.  What depends
+// on B alone is computed once, for the directions of a tangent.
+class PlaneLogarithmDerivative {
  public:
-  KOKKOS_INLINE_FUNCTION explicit LogarithmDerivative(const PlaneSym<double>& B)
+  KOKKOS_INLINE_FUNCTION explicit PlaneLogarithmDerivative(const Sym<double>& B)
       : B_(B), m_(0.5 * (B.xx + B.yy)), h_(0.5 * (B.xx - B.yy)) {
     const double s = h_ * h_ + B.xy * B.xy;
     double phi, dphi;
@@ -165,74 +207,54 @@ class LogarithmDerivative {
     g1_ = phi / m_, c_ = dphi / (m_ * m_ * m_);
     inverseDet_ = 1.0 / (B.xx * B.yy - B.xy * B.xy);
   }
-  KOKKOS_INLINE_FUNCTION PlaneSym<double> along(const PlaneSym<double>& dB) const {
+  KOKKOS_INLINE_FUNCTION Sym<double> along(const Sym<double>& dB) const {
     const double dm = 0.5 * (dB.xx + dB.yy), dh = 0.5 * (dB.xx - dB.yy);
     const double ds = 2.0 * (h_ * dh + B_.xy * dB.xy);
     const double dg0 = (m_ * dm - 0.5 * ds) * inverseDet_, dg1 = c_ * ds - dm * inverseDet_;
-    return {dg0 + dg1 * h_ + g1_ * dh, dg0 - dg1 * h_ - g1_ * dh, dg1 * B_.xy + g1_ * dB.xy,
-            dB.zz / B_.zz};
+    return {dg0 + dg1 * h_ + g1_ * dh,
+            dg0 - dg1 * h_ - g1_ * dh,
+            dB.zz / B_.zz,
+            dg1 * B_.xy + g1_ * dB.xy,
+            0.0,
+            0.0};
   }
 
  private:
-  PlaneSym<double> B_;
+  Sym<double> B_;
   double m_, h_, g1_ = 0, c_ = 0, inverseDet_ = 0;
 };
 
+// The derivative of ln B (B symmetric positive definite) of a Dim-D law, constructed from B,
+// along(dB) for any direction of that dimension.
+template <int Dim>
+using LogarithmDerivative =
+    std::conditional_t<Dim == 2, PlaneLogarithmDerivative, IsotropicDerivative<Logarithm>>;
+
 // Hencky's law: tau = lambda tr(eps) I + 2 mu eps (isotropic, linear in the log strain).
 template <class T>
-KOKKOS_INLINE_FUNCTION PlaneSym<T> henckyStress(const PlaneSym<T>& eps, double mu, double lambda) {
+KOKKOS_INLINE_FUNCTION Sym<T> henckyStress(const Sym<T>& eps, double mu, double lambda) {
   return plusIdentity(scaled(eps, 2.0 * mu), lambda * trace(eps));
 }
 
 // Hencky's stored energy: lambda/2 tr(eps)^2 + mu eps : eps.
 template <class T>
-KOKKOS_INLINE_FUNCTION T henckyEnergy(const PlaneSym<T>& eps, double mu, double lambda) {
+KOKKOS_INLINE_FUNCTION T henckyEnergy(const Sym<T>& eps, double mu, double lambda) {
   const T tr = trace(eps);
   return 0.5 * lambda * tr * tr + mu * squaredNorm(eps);
 }
 
-// F A F^T for the in-plane block of F (F_zz = 1).
-template <class T, class S>
-KOKKOS_INLINE_FUNCTION auto congruence(const S F[2][2], const PlaneSym<T>& a)
-    -> PlaneSym<decltype(S() * T())> {
-  using R = decltype(S() * T());
-  const R t00 = F[0][0] * a.xx + F[0][1] * a.xy, t01 = F[0][0] * a.xy + F[0][1] * a.yy;
-  const R t10 = F[1][0] * a.xx + F[1][1] * a.xy, t11 = F[1][0] * a.xy + F[1][1] * a.yy;
-  return {t00 * F[0][0] + t01 * F[0][1], t10 * F[1][0] + t11 * F[1][1],
-          t00 * F[1][0] + t01 * F[1][1], R(a.zz)};
-}
-
-// F^-1 of the in-plane block, given its determinant.
-template <class T>
-KOKKOS_INLINE_FUNCTION void inverseOf(const T F[2][2], const T& J, T Finv[2][2]) {
-  Finv[0][0] = F[1][1] / J, Finv[0][1] = -F[0][1] / J;
-  Finv[1][0] = -F[1][0] / J, Finv[1][1] = F[0][0] / J;
-}
-
 // The trial elastic strain of a step from the plastic state C_p^-1: (1/2) ln(F C_p^-1 F^T).
 template <class T>
-KOKKOS_INLINE_FUNCTION PlaneSym<T> trialElasticStrain(const T F[2][2],
-                                                      const PlaneSym<double>& CpInv) {
+KOKKOS_INLINE_FUNCTION Sym<T> trialElasticStrain(const T F[3][3], const Sym<double>& CpInv) {
   return scaled(isotropicFunction<Logarithm>(congruence(F, CpInv)), 0.5);
 }
 
 // The plastic state after the return: C_p^-1 = F^-1 exp(2 eps_e) F^-T.
 template <class T>
-KOKKOS_INLINE_FUNCTION PlaneSym<T> plasticMetricOf(const T F[2][2], const PlaneSym<T>& epsE) {
-  const T J = F[0][0] * F[1][1] - F[0][1] * F[1][0];
-  T Finv[2][2];
-  inverseOf(F, J, Finv);
+KOKKOS_INLINE_FUNCTION Sym<T> plasticMetricOf(const T F[3][3], const Sym<T>& epsE) {
+  T Finv[3][3];
+  inverseOf(F, determinantOf(F), Finv);
   return congruence(Finv, isotropicFunction<Exponential>(scaled(epsE, 2.0)));
-}
-
-// The in-plane first Piola stress P = tau F^-T of a Kirchhoff stress.
-template <class T, class S>
-KOKKOS_INLINE_FUNCTION void piolaOfKirchhoff(const PlaneSym<T>& tau, const S Finv[2][2],
-                                             T P[2][2]) {
-  const T t[2][2] = {{tau.xx, tau.xy}, {tau.xy, tau.yy}};
-  for (int a = 0; a < 2; ++a)
-    for (int b = 0; b < 2; ++b)
-      P[a][b] = t[a][0] * Finv[b][0] + t[a][1] * Finv[b][1];
 }
 
 }  // namespace impm

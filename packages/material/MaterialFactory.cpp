@@ -1,15 +1,16 @@
 #include "material/MaterialFactory.hpp"
 
+#include <algorithm>
 #include <functional>
 
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
 #include "material/DruckerPragerLaw.hpp"
+#include "material/ElasticLaws.hpp"
 #include "material/ElasticLaws1D.hpp"
 #include "material/FormulaLaw1D.hpp"
 #include "material/HenckyLaw.hpp"
 #include "material/J2Law.hpp"
-#include "material/PlaneStrainLaws.hpp"
 #include "material/PlasticLaw1D.hpp"
 
 namespace impm {
@@ -37,11 +38,23 @@ std::vector<MaterialModel<1>>& registry<1>() {
 template <>
 std::vector<MaterialModel<2>>& registry<2>() {
   static std::vector<MaterialModel<2>> models = {
-      materialModel<PlaneStrainLaw<LinearElasticLaw>, 2>(),
-      materialModel<PlaneStrainLaw<NeoHookeanLaw>, 2>(),
-      materialModel<PlaneStrainLaw<HenckyLaw>, 2>(),
-      materialModel<FiniteStrainPlasticity<J2Law>, 2>(),
-      materialModel<FiniteStrainPlasticity<DruckerPragerLaw>, 2>(),
+      materialModel<ElasticLaw<2, LinearElasticLaw>, 2>(),
+      materialModel<ElasticLaw<2, NeoHookeanLaw>, 2>(),
+      materialModel<ElasticLaw<2, HenckyLaw>, 2>(),
+      materialModel<FiniteStrainPlasticity<2, J2Law>, 2>(),
+      materialModel<FiniteStrainPlasticity<2, DruckerPragerLaw>, 2>(),
+  };
+  return models;
+}
+
+template <>
+std::vector<MaterialModel<3>>& registry<3>() {
+  static std::vector<MaterialModel<3>> models = {
+      materialModel<ElasticLaw<3, LinearElasticLaw>, 3>(),
+      materialModel<ElasticLaw<3, NeoHookeanLaw>, 3>(),
+      materialModel<ElasticLaw<3, HenckyLaw>, 3>(),
+      materialModel<FiniteStrainPlasticity<3, J2Law>, 3>(),
+      materialModel<FiniteStrainPlasticity<3, DruckerPragerLaw>, 3>(),
   };
   return models;
 }
@@ -49,6 +62,8 @@ std::vector<MaterialModel<2>>& registry<2>() {
 template <int Dim>
 void addVariants(Teuchos::ParameterList& valid, std::vector<std::string>& models) {
   for (const auto& e : registry<Dim>()) {
+    if (std::find(models.begin(), models.end(), e.model) != models.end())
+      continue;  // the same model in another dimension: the same parameters
     models.push_back(e.model);
     valid.sublist("[Model=" + e.model + "]", false, std::to_string(Dim) + "-D model")
         .setParameters(e.validParameters());
@@ -78,6 +93,7 @@ Teuchos::ParameterList materialValidParameters() {
   std::vector<std::string> models;
   addVariants<1>(variants, models);
   addVariants<2>(variants, models);
+  addVariants<3>(variants, models);
   Teuchos::ParameterList valid;
   declareChoice(valid, "Model", models.front(), models, "Constitutive model", true);
   declareDouble(valid, "Density", 1.0, "Mass density in the reference configuration",
@@ -100,11 +116,15 @@ std::shared_ptr<Material<Dim>> createMaterial(const std::string& name,
 
 template void registerMaterialModel<1>(const MaterialModel<1>&);
 template void registerMaterialModel<2>(const MaterialModel<2>&);
+template void registerMaterialModel<3>(const MaterialModel<3>&);
 template std::vector<std::string> materialModels<1>();
 template std::vector<std::string> materialModels<2>();
+template std::vector<std::string> materialModels<3>();
 template std::shared_ptr<Material<1>> createMaterial<1>(const std::string&,
                                                         const Teuchos::ParameterList&);
 template std::shared_ptr<Material<2>> createMaterial<2>(const std::string&,
+                                                        const Teuchos::ParameterList&);
+template std::shared_ptr<Material<3>> createMaterial<3>(const std::string&,
                                                         const Teuchos::ParameterList&);
 
 }  // namespace impm

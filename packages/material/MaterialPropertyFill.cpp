@@ -52,7 +52,10 @@ template void fillPropertyFromFormula<1>(const Material<1>::Evaluation&, const M
                                          const Formula&, const std::string&, Bounds);
 template void fillPropertyFromFormula<2>(const Material<2>::Evaluation&, const Material<2>::Table&,
                                          const Formula&, const std::string&, Bounds);
+template void fillPropertyFromFormula<3>(const Material<3>::Evaluation&, const Material<3>::Table&,
+                                         const Formula&, const std::string&, Bounds);
 template double maxProperty<1>(const Material<1>::Evaluation&, const Material<1>::Table&);
 template double maxProperty<2>(const Material<2>::Evaluation&, const Material<2>::Table&);
+template double maxProperty<3>(const Material<3>::Evaluation&, const Material<3>::Table&);
 
 }  // namespace impm

@@ -121,6 +121,7 @@ double maxModulus(const ParticleSet<Dim>& particles, const Materials<Dim>& mater
                                 Modulus);
 IMPM_INSTANTIATE(1)
 IMPM_INSTANTIATE(2)
+IMPM_INSTANTIATE(3)
 #undef IMPM_INSTANTIATE
 
 }  // namespace impm

@@ -441,5 +441,6 @@ double DynamicStepper<Dim>::stableTimeStep(const GridGeometry<Dim>& grid,
 
 template class DynamicStepper<1>;
 template class DynamicStepper<2>;
+template class DynamicStepper<3>;
 
 }  // namespace impm

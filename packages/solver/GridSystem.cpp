@@ -692,5 +692,6 @@ bool GridSystem<Dim>::hasTrialState() const {
 
 template class GridSystem<1>;
 template class GridSystem<2>;
+template class GridSystem<3>;
 
 }  // namespace impm

@@ -57,6 +57,7 @@ void moveParticles(const GridSystem<Dim>& system, const Vector& du, Kinematics k
   template void moveParticles<D>(const GridSystem<D>&, const Vector&, Kinematics, ParticleSet<D>&);
 IMPM_INSTANTIATE(1)
 IMPM_INSTANTIATE(2)
+IMPM_INSTANTIATE(3)
 #undef IMPM_INSTANTIATE
 
 }  // namespace impm

@@ -136,5 +136,6 @@ void QuasiStaticStepper<Dim>::run(const StepCallback<Dim>& onStep) {
 
 template class QuasiStaticStepper<1>;
 template class QuasiStaticStepper<2>;
+template class QuasiStaticStepper<3>;
 
 }  // namespace impm

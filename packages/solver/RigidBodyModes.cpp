@@ -45,5 +45,6 @@ Teuchos::RCP<MultiVector> rigidBodyModes(const GridGeometry<Dim>& grid, const Do
 
 template Teuchos::RCP<MultiVector> rigidBodyModes<1>(const GridGeometry<1>&, const DofMap<1>&);
 template Teuchos::RCP<MultiVector> rigidBodyModes<2>(const GridGeometry<2>&, const DofMap<2>&);
+template Teuchos::RCP<MultiVector> rigidBodyModes<3>(const GridGeometry<3>&, const DofMap<3>&);
 
 }  // namespace impm

@@ -193,5 +193,6 @@ void Stepper<Dim>::accept(StepRecord& record, const StepGrid<Dim>& grid,
 
 template class Stepper<1>;
 template class Stepper<2>;
+template class Stepper<3>;
 
 }  // namespace impm

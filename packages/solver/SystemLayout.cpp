@@ -425,7 +425,9 @@ LaidOut<Dim> layoutOf(const LayoutInputs<Dim>& in, LayoutCache<Dim>& cache) {
 
 template class LayoutCache<1>;
 template class LayoutCache<2>;
+template class LayoutCache<3>;
 template LaidOut<1> layoutOf(const LayoutInputs<1>&, LayoutCache<1>&);
 template LaidOut<2> layoutOf(const LayoutInputs<2>&, LayoutCache<2>&);
+template LaidOut<3> layoutOf(const LayoutInputs<3>&, LayoutCache<3>&);
 
 }  // namespace impm

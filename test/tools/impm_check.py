@@ -655,6 +655,111 @@ def same(args):
     sys.exit(1 if worst > args.rtol else 0)
 
 
+def slab_deck(deck, out_path):
+    """Writes the 3-D slab of a 2-D deck: one cell thick along z (as thick as a cell is wide),
+    rectangles become boxes and disks cylinders through the slab, Dirichlet boxes span it,
+    and rollers on the back and front faces hold u_z = 0.  Plane strain is then the slab's
+    exact state, so every field must equal the 2-D run's."""
+    import xml.etree.ElementTree as ET
+    tree = ET.parse(deck)
+    root = tree.getroot()
+    sub = lambda node, name: next(c for c in node if c.get("name") == name)
+    numbers = lambda e: [v.strip() for v in e.get("value").strip("{} ").split(",")]
+    array = lambda e, values: e.set("value", "{" + ", ".join(values) + "}")
+    grid = sub(root, "Grid")
+    cells, length = sub(grid, "Cells"), sub(grid, "Length")
+    thickness = float(numbers(length)[0]) / float(numbers(cells)[0])
+    array(cells, numbers(cells) + ["1"])
+    array(length, numbers(length) + [repr(thickness)])
+    for e in grid:
+        if e.get("name") == "Origin" and numbers(e) != [""]:
+            array(e, numbers(e) + ["0"])
+    for body in sub(root, "Bodies"):
+        shape = sub(body, "Shape")
+        if shape.get("value") == "rectangle":
+            shape.set("value", "box")
+            array(sub(body, "Lower Corner"), numbers(sub(body, "Lower Corner")) + ["0"])
+            array(sub(body, "Upper Corner"), numbers(sub(body, "Upper Corner")) + [repr(thickness)])
+        elif shape.get("value") == "disk":
+            shape.set("value", "cylinder")
+            array(sub(body, "Center"), numbers(sub(body, "Center")) + [repr(thickness / 2)])
+            ET.SubElement(body, "Parameter", name="Length", type="double", value=repr(thickness))
+        else:
+            sys.exit("slab: no 3-D form of shape %s" % shape.get("value"))
+    conditions = next((c for c in root if c.get("name") == "Boundary Conditions"), None)
+    if conditions is None:
+        conditions = ET.SubElement(root, "ParameterList", name="Boundary Conditions")
+    for bc in conditions:
+        kind = sub(bc, "Type").get("value")
+        if kind != "Dirichlet":
+            sys.exit("slab: no 3-D form of a %s condition" % kind)
+        for e in bc:
+            if e.get("name") == "Box":
+                array(e, numbers(e) + ["0", repr(thickness)])
+    for face in ("back", "front"):
+        bc = ET.SubElement(conditions, "ParameterList", name="slab " + face)
+        for name, value in (("Type", "Dirichlet"), ("Face", face), ("Component", "z")):
+            ET.SubElement(bc, "Parameter", name=name, type="string", value=value)
+    for v in root:
+        if v.get("name") == "Verification" and any(e.get("name") == "Exact Displacement x"
+                                                   for e in v):
+            ET.SubElement(v, "Parameter", name="Exact Displacement z", type="string", value="0")
+    tree.write(out_path)
+
+
+def slab(args):
+    """The 2-D deck and its 3-D slab (slab_deck) must give the same particle fields: each
+    2-D particle has n copies through the slab's thickness (n particles per cell and
+    direction), whose columns must equal its own to --rtol (relative to 1 for F and J, to the
+    largest stress for stresses, to the largest displacement for displacements)."""
+    out = tempfile.mkdtemp(prefix="impm-slab-", dir=".")
+    three = os.path.join(out, stem(args.deck) + "_slab.xml")
+    slab_deck(args.deck, three)
+    tables = []
+    for deck in (args.deck, three):
+        run = os.path.join(out, stem(deck))
+        r = run_impm(args, deck, run, ["Solver/Print Iterations=false"] + args.set, np=args.np)
+        if r.returncode != 0:
+            print(r.stdout, r.stderr)
+            sys.exit("impm failed on " + deck)
+        tables.append(read_csv(os.path.join(run, stem(deck) + "_particles.csv")))
+    shutil.rmtree(out)
+    two, slab_rows = tables
+    key = lambda row: (round(float(row["X"]), 9), round(float(row["Y"]), 9))
+    plane = {key(row): row for row in two}
+    copies = {}
+    for row in slab_rows:
+        copies.setdefault(key(row), []).append(row)
+    failures = []
+    if set(copies) != set(plane):
+        failures.append("the slab's particles are not the 2-D particles' copies through z")
+    counts = {len(v) for v in copies.values()}
+    print("%d 2-D particles, %d in the slab (%s per 2-D particle)"
+          % (len(two), len(slab_rows), ", ".join(map(str, sorted(counts)))))
+    worst = {}
+    # Scales as in uniform: 1 for F and J, the largest of all the stresses (or displacements)
+    # for a stress (a displacement), so that a component that is zero compares at round-off.
+    largest = lambda prefix: max([abs(float(r[c])) for c in args.columns if c.startswith(prefix)
+                                  for r in two] + [1e-300])
+    for c in args.columns:
+        scale = (1.0 if c[0] in "FJ" else largest("stress") if c.startswith("stress")
+                 else largest("u_") if c.startswith("u_")
+                 else max(max(abs(float(r[c])) for r in two), 1e-300))
+        worst[c] = max(abs(float(r3[c]) - float(plane[k][c])) / scale
+                       for k, rows in copies.items() if k in plane for r3 in rows)
+        print("%-10s largest relative difference %.2e" % (c, worst[c]))
+        if worst[c] > args.rtol:
+            failures.append("%s differs by %.2e (allowed %g)" % (c, worst[c], args.rtol))
+    for z in ("u_z",):
+        largest = max(abs(float(r[z])) for r in slab_rows)
+        print("%-10s largest %.2e" % (z, largest))
+        if largest > args.rtol:
+            failures.append("the slab moves along z (%s up to %.2e)" % (z, largest))
+    for f in failures:
+        print("FAIL:", f)
+    sys.exit(1 if failures else 0)
+
+
 def iterations(args):
     """Mean Krylov iterations per Newton iteration, one run per --size (a --set value), must
     stay within --ratio of each other (a preconditioner whose cost per unknown is flat)."""
@@ -850,6 +955,17 @@ def main():
     s.add_argument("--rtol", type=float, default=1e-8)
     s.add_argument("--set", action="append", default=[])
 
+    sl = sub.add_parser("slab")
+    sl.add_argument("--deck", required=True)
+    sl.add_argument("--np", type=int, default=1)
+    sl.add_argument("--columns", nargs="+",
+                    default=["u_x", "u_y", "stress_xx", "stress_yy", "stress_xy", "stress_zz",
+                             "J", "F_xx", "F_xy", "F_yx", "F_yy"])
+    sl.add_argument("--rtol", type=float, default=1e-9)
+    sl.add_argument("--set", action="append", default=[],
+                    help="Path=value for both runs (not the grid or the bodies' geometry, "
+                    "which the slab changes)")
+
     it = sub.add_parser("iterations")
     it.add_argument("--deck", required=True)
     it.add_argument("--size", action="append", nargs="+", required=True,
@@ -863,7 +979,7 @@ def main():
 
     args = p.parse_args()
     {"convergence": convergence, "ranks": ranks, "fails": fails, "docs": docs, "newton": newton,
-     "same": same, "uniform": uniform, "translation": translation,
+     "same": same, "slab": slab, "uniform": uniform, "translation": translation,
      "history": history, "extreme": extreme, "exclusive": exclusive,
      "history-every": history_every,
      "unloading": unloading, "energy": energy, "iterations": iterations}[args.check](args)

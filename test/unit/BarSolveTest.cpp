@@ -281,54 +281,71 @@ TEST(GridSystem, JacobianIsTheDerivativeOfTheResidual) {
 namespace impm {
 namespace {
 
-// The same check in 2-D for every method, both kinematics and every 2-D law: particles of a
-// square block that was already sheared and stretched (F != I, domains F r0), so that the
+// The same check in 2-D (3-D) for every method, both kinematics and every law: particles of a
+// square (cubic) block that was already sheared and stretched (F != I, domains F r0), so that the
 // push-forward of P and A to the start of the step is exercised in updated Lagrangian runs.
 // `kinematics`: the particles are on the rank of their map position (X in total, x in updated
 // Lagrangian), as F-bar requires; the positions X otherwise.
-ParticleSet<2> deformedBlock(const NodeOwnership<2>& own, Method method,
-                             std::optional<Kinematics> kinematics = std::nullopt) {
-  const double F[2][2] = {{1.06, 0.12}, {-0.04, 0.93}};
+template <int Dim>
+ParticleSet<Dim> deformedBlock(const NodeOwnership<Dim>& own, Method method,
+                               std::optional<Kinematics> kinematics = std::nullopt) {
+  // A general stretch and shear (2-D: its in-plane block).
+  const double F3[3][3] = {{1.06, 0.12, 0.03}, {-0.04, 0.93, 0.05}, {0.02, -0.06, 1.04}};
+  double F[Dim][Dim];
+  for (int a = 0; a < Dim; ++a)
+    for (int b = 0; b < Dim; ++b)
+      F[a][b] = F3[a][b];
   const int rank = own.comm()->getRank();
-  const int n = 8;  // 8 x 8 particles in [0.3, 0.7]^2 (fem: Gauss points of its cells)
-  std::vector<std::array<double, 2>> X;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const std::array<double, 2> at = {0.3 + (i + 0.5) * 0.4 / n, 0.3 + (j + 0.5) * 0.4 / n};
-      std::array<double, 2> placed = at;
-      if (kinematics == Kinematics::updatedLagrangian)
-        for (int a = 0; a < 2; ++a)
-          placed[a] = 0.5 + F[a][0] * (at[0] - 0.5) + F[a][1] * (at[1] - 0.5);
-      if (own.decomposition().ownerOfPoint(placed.data()) == rank)
-        X.push_back(at);
+  // n^Dim particles in [0.3, 0.7]^Dim (fem: Gauss points of its cells)
+  const int n = Dim == 2 ? 8 : 4;
+  const auto placedAt = [&](const std::array<double, Dim>& at) {
+    std::array<double, Dim> x;
+    for (int a = 0; a < Dim; ++a) {
+      x[a] = 0.5;
+      for (int b = 0; b < Dim; ++b)
+        x[a] += F[a][b] * (at[b] - 0.5);
     }
-  ParticleSet<2, Kokkos::DefaultHostExecutionSpace> h(X.size());
+    return x;
+  };
+  std::vector<std::array<double, Dim>> X;
+  int idx[Dim] = {};
+  for (int count = 0; count < std::pow(n, Dim); ++count) {
+    std::array<double, Dim> at;
+    for (int d = 0, c = count; d < Dim; ++d, c /= n)
+      idx[d] = c % n, at[d] = 0.3 + (idx[d] + 0.5) * 0.4 / n;
+    // Updated Lagrangian: the particle sits at F X about the block's centre.
+    const std::array<double, Dim> placed =
+        kinematics == Kinematics::updatedLagrangian ? placedAt(at) : at;
+    if (own.decomposition().ownerOfPoint(placed.data()) == rank)
+      X.push_back(at);
+  }
+  ParticleSet<Dim, Kokkos::DefaultHostExecutionSpace> h(X.size());
   const double half = 0.2 / n;
   for (std::size_t p = 0; p < X.size(); ++p) {
-    for (int a = 0; a < 2; ++a) {
+    const auto x = placedAt(X[p]);
+    for (int a = 0; a < Dim; ++a) {
       h.X(p, a) = X[p][a];
-      // Updated Lagrangian: the particle sits at F X about the block's centre.
-      h.x(p, a) = 0.5 + F[a][0] * (X[p][0] - 0.5) + F[a][1] * (X[p][1] - 0.5);
-      for (int b = 0; b < 2; ++b) {
+      h.x(p, a) = x[a];
+      for (int b = 0; b < Dim; ++b) {
         h.F(p, a, b) = method == Method::fem ? (a == b) : F[a][b];
         h.domain0(p, a, b) = a == b ? half : 0.0;
         h.domain(p, a, b) = method == Method::fem ? h.domain0(p, a, b) : F[a][b] * half;
       }
       h.force(p, a) = 0.1 * (a + 1);
     }
-    h.volume0(p) = 4 * half * half;
-    h.volume(p) =
-        h.volume0(p) * (method == Method::fem ? 1.0 : F[0][0] * F[1][1] - F[0][1] * F[1][0]);
+    h.volume0(p) = std::pow(2 * half, Dim);
+    h.volume(p) = h.volume0(p) * (method == Method::fem ? 1.0 : determinant<Dim>(F));
     h.section(p) = 1.0, h.mass(p) = h.volume0(p);
   }
-  ParticleSet<2> ps;
+  ParticleSet<Dim> ps;
   ps.copyFrom(h);
   return ps;
 }
 
-// The 2-D law `law` (E = 100, nu = 0.3; plastic laws yielding) on every particle of ps, its
+// The law `law` (E = 100, nu = 0.3; plastic laws yielding) on every particle of ps, its
 // variables declared and initialized.
-Materials<2> elasticOn(ParticleSet<2>& ps, const std::string& law) {
+template <int Dim>
+Materials<Dim> elasticOn(ParticleSet<Dim>& ps, const std::string& law) {
   Teuchos::ParameterList mat;
   mat.set("Model", law), mat.set("E", 100.0), mat.set("nu", 0.3);
   // The plastic laws yield at a fraction of the block's stress (about 5): every point is
@@ -338,7 +355,7 @@ Materials<2> elasticOn(ParticleSet<2>& ps, const std::string& law) {
   if (law == "drucker-prager")
     mat.set("Cohesion", 0.2), mat.set("Friction Angle", 20.0), mat.set("Dilation Angle", 20.0);
   validateParameters(mat, materialValidParameters());
-  Materials<2> materials = {createMaterial<2>("m", mat)};
+  Materials<Dim> materials = {createMaterial<Dim>("m", mat)};
   declareMaterialVariables(ps, materials), initializeMaterials(ps, materials, true);
   return materials;
 }
@@ -351,8 +368,8 @@ TEST(GridSystem, JacobianIsTheDerivativeOfTheResidualIn2D) {
       for (Kinematics kinematics : {Kinematics::totalLagrangian, Kinematics::updatedLagrangian}) {
         if (method == Method::fem && kinematics == Kinematics::updatedLagrangian)
           continue;  // fem integrates on the grid as a fixed mesh
-        auto ps = deformedBlock(own, method);
-        const auto materials = elasticOn(ps, law);
+        auto ps = deformedBlock<2>(own, method);
+        const auto materials = elasticOn<2>(ps, law);
         const std::vector<std::shared_ptr<Contribution<2>>> none;
         GridSystem<2> system(own, method, kinematics, ps, materials, none, 1.0, 1.0);
         const std::string what =
@@ -375,9 +392,9 @@ TEST(GridSystem, JacobianWithFBarIsTheDerivativeOfTheResidualIn2D) {
       for (Kinematics kinematics : {Kinematics::totalLagrangian, Kinematics::updatedLagrangian}) {
         if (method == Method::fem && kinematics == Kinematics::updatedLagrangian)
           continue;
-        auto ps = deformedBlock(own, method, kinematics);
+        auto ps = deformedBlock<2>(own, method, kinematics);
         declareFBarFields(ps, FBar::cell, kinematics);
-        const auto materials = elasticOn(ps, law);
+        const auto materials = elasticOn<2>(ps, law);
         const std::vector<std::shared_ptr<Contribution<2>>> none;
         GridSystem<2> system(own, method, kinematics, ps, materials, none, 1.0, 1.0, nullptr,
                              nullptr, NodeCoupling::shared, FBar::cell);
@@ -391,6 +408,37 @@ TEST(GridSystem, JacobianWithFBarIsTheDerivativeOfTheResidualIn2D) {
         const bool plastic = law == "j2" || law == "drucker-prager";
         EXPECT_LT(jacobianError(system, 0.003), plastic ? 1e-7 : 1e-9) << what;
       }
+}
+
+// 3-D: the Jacobian is the residual's derivative for every method, both kinematics and every
+// law, with and without F-bar, on a sheared and stretched block of 4 x 4 x 4 particles.
+TEST(GridSystem, JacobianIsTheDerivativeOfTheResidualIn3D) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  NodeOwnership<3> own(makeGridGeometry<3>({0.0, 0.0, 0.0}, {1.0, 1.0, 1.0}, {5, 5, 5}), comm);
+  double worst[2] = {0.0, 0.0};  // elastic, plastic
+  for (const std::string law : {"linear-elastic", "neo-hookean", "hencky", "j2", "drucker-prager"})
+    for (Method method : {Method::fem, Method::mpm, Method::gimp, Method::cpdi})
+      for (Kinematics kinematics : {Kinematics::totalLagrangian, Kinematics::updatedLagrangian})
+        for (FBar fbar : {FBar::none, FBar::cell}) {
+          if (method == Method::fem && kinematics == Kinematics::updatedLagrangian)
+            continue;  // fem integrates on the grid as a fixed mesh
+          auto ps = deformedBlock<3>(own, method, kinematics);
+          declareFBarFields(ps, fbar, kinematics);
+          const auto materials = elasticOn<3>(ps, law);
+          const std::vector<std::shared_ptr<Contribution<3>>> none;
+          GridSystem<3> system(own, method, kinematics, ps, materials, none, 1.0, 1.0, nullptr,
+                               nullptr, NodeCoupling::shared, fbar);
+          const std::string what =
+              law + ", " + methodName(method) +
+              (kinematics == Kinematics::totalLagrangian ? ", total" : ", updated") +
+              (fbar == FBar::cell ? ", F-bar" : "");
+          const bool plastic = law == "j2" || law == "drucker-prager";
+          const double error = jacobianError(system, 0.003);
+          worst[plastic] = std::max(worst[plastic], error);
+          EXPECT_LT(error, plastic ? 1e-7 : 1e-9) << what;
+        }
+  std::cout << "  3-D Jacobian against central differences: largest relative error " << worst[0]
+            << " (elastic laws), " << worst[1] << " (plastic laws)\n";
 }
 
 // The ghost penalty (assembly/GhostPenalty.hpp) in the residual and the Jacobian: the
@@ -487,8 +535,8 @@ TEST(GridSystem, ExplicitStepStartsFromTheCommittedStress) {
   for (const std::string law : {"linear-elastic", "neo-hookean"})
     for (Method method : {Method::gimp, Method::cpdi}) {
       const std::string what = law + ", " + methodName(method);
-      auto ps = deformedBlock(own, method);
-      const auto materials = elasticOn(ps, law);
+      auto ps = deformedBlock<2>(own, method);
+      const auto materials = elasticOn<2>(ps, law);
       {  // a step: the particles move and commit a new stress
         GridSystem<2> step(own, method, Kinematics::updatedLagrangian, ps, materials, none, 1.0,
                            1.0);
@@ -539,8 +587,8 @@ TEST(GridSystem, PrescribedUnknownsKeepTheJacobianSymmetric) {
     for (Method method : {Method::fem, Method::gimp, Method::cpdi}) {
       const auto kinematics =
           method == Method::fem ? Kinematics::totalLagrangian : Kinematics::updatedLagrangian;
-      auto ps = deformedBlock(own, method);
-      const auto materials = elasticOn(ps, law);
+      auto ps = deformedBlock<2>(own, method);
+      const auto materials = elasticOn<2>(ps, law);
       ASSERT_TRUE(materials[0]->hasSymmetricTangent()) << law;
       GridSystem<2> system(own, method, kinematics, ps, materials, held, 1.0, 1.0);
       Vector x(system.unknownMap()), v(system.unknownMap()), w(system.unknownMap());

@@ -14,6 +14,7 @@
 #include "core/Errors.hpp"
 #include "core/Formula.hpp"
 #include "core/Parameters.hpp"
+#include "core/Tensor.hpp"
 
 namespace impm {
 namespace {
@@ -484,6 +485,88 @@ TEST(Decomposition, ATableGivesEveryCellItsRankAndItsNodesFollow) {
 
 // All the particles start in the cells of rank 0 (the lower rows of a column); a repartition
 // must spread them over the ranks in about equal counts, with one table on every rank.
+// 3-D blocks: every cell and node has one owner, and 8 ranks on a cube of cells take 2 x 2 x 2
+// blocks (the least surface per volume), 4 ranks on a grid long in z split z only.
+TEST(Decomposition, ThreeDimensionalBlocksAreAsCubicAsTheRankCountAllows) {
+  const auto cube = makeGridGeometry<3>({0.0, 0.0, 0.0}, {1.0, 1.0, 1.0}, {6, 6, 6});
+  EXPECT_EQ(Decomposition<3>(cube, 8).blocks(), (std::array<int, 3>{2, 2, 2}));
+  const auto tall = makeGridGeometry<3>({0.0, 0.0, 0.0}, {1.0, 1.0, 8.0}, {2, 2, 16});
+  EXPECT_EQ(Decomposition<3>(tall, 4).blocks(), (std::array<int, 3>{1, 1, 4}));
+  for (int ranks : {1, 2, 3, 4, 6, 8}) {
+    const auto g = makeGridGeometry<3>({0.0, 0.0, 0.0}, {2.0, 1.0, 1.5}, {5, 3, 4});
+    Decomposition<3> d(g, ranks);
+    std::vector<int> cells(g.numCells(), 0), nodes(g.numNodes(), 0);
+    for (int r = 0; r < ranks; ++r) {
+      for (auto c : d.ownedCells(r)) {
+        ++cells[c];
+        EXPECT_EQ(d.ownerOfCell(c), r);
+      }
+      for (auto n : d.ownedNodes(r)) {
+        ++nodes[n];
+        EXPECT_EQ(d.ownerOfNode(n), r);
+      }
+    }
+    for (int c : cells)
+      EXPECT_EQ(c, 1) << ranks << " ranks";
+    for (int c : nodes)
+      EXPECT_EQ(c, 1) << ranks << " ranks";
+  }
+}
+
+// The 3-D determinant and inverse: a^-1 a = I, det(a b) = det a det b, on matrices with
+// every entry non-zero.
+TEST(Tensor, ThreeDimensionalDeterminantAndInverse) {
+  const double a[3][3] = {{2.0, -0.3, 0.7}, {0.4, 1.5, -0.2}, {-0.6, 0.9, 3.1}};
+  const double b[3][3] = {{1.1, 0.2, -0.5}, {-0.8, 0.6, 0.3}, {0.25, -0.4, 2.2}};
+  double ab[3][3] = {}, inv[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        ab[i][j] += a[i][k] * b[k][j];
+  const double det = determinant<3>(a);
+  // By the rule of Sarrus, written out independently of the code's cofactor form.
+  const double sarrus = a[0][0] * a[1][1] * a[2][2] + a[0][1] * a[1][2] * a[2][0] +
+                        a[0][2] * a[1][0] * a[2][1] - a[0][2] * a[1][1] * a[2][0] -
+                        a[0][0] * a[1][2] * a[2][1] - a[0][1] * a[1][0] * a[2][2];
+  EXPECT_NEAR(det, sarrus, 1e-14);
+  EXPECT_NEAR(determinant<3>(ab), det * determinant<3>(b), 1e-13);
+  inverse<3>(a, det, inv);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      double e = 0.0;
+      for (int k = 0; k < 3; ++k)
+        e += inv[i][k] * a[k][j];
+      EXPECT_NEAR(e, i == j ? 1.0 : 0.0, 1e-14) << i << j;
+    }
+}
+
+// Cells crowded in the lowest layers of a column of cells along z: only cuts along z can
+// spread them, so a partition that ignored z (the cells' x and y centres are all the same)
+// could not.
+TEST(Repartition, CutsAlongZInThreeDimensions) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  const int size = comm->getSize(), rank = comm->getRank();
+  NodeOwnership<3> own(makeGridGeometry<3>({0.0, 0.0, 0.0}, {1.0, 1.0, 16.0}, {1, 1, 16}), comm);
+  std::vector<std::array<double, 3>> points;
+  for (int k = 0; k < 4; ++k)  // four particles in each of the lowest four layers
+    for (int q = 0; q < 4; ++q) {
+      const double x[3] = {0.2 + 0.2 * q, 0.5, k + 0.5};
+      if (own.decomposition().ownerOfPoint(x) == rank)
+        points.push_back({x[0], x[1], x[2]});
+    }
+  ParticleSet<3> ps(points.size());
+  auto x = Kokkos::create_mirror_view(ps.x);
+  for (std::size_t p = 0; p < points.size(); ++p)
+    for (int d = 0; d < 3; ++d)
+      x(p, d) = points[p][d];
+  Kokkos::deep_copy(ps.x, x);
+  auto partition = repartitionCells(own.decomposition(), ps, comm);
+  own.repartition(std::move(partition.decomposition));
+  migrateToOwners(ps, own.decomposition(), *comm);
+  // 4 layers of 4 particles: 1, 2 and 4 ranks balance exactly, 3 ranks to 8 against 16/3.
+  EXPECT_LE(particleImbalance(ps.size(), *comm), size == 3 ? 1.5 + 1e-12 : 1.0 + 1e-12);
+}
+
 TEST(Repartition, SpreadsParticlesCrowdedOnOneRank) {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   const int size = comm->getSize(), rank = comm->getRank();

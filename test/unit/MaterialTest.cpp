@@ -252,31 +252,32 @@ namespace {
 // the small-strain tangent lambda d_ab d_cd + mu (d_ac d_bd + d_ad d_bc).
 class EveryPlaneStrainLaw : public ::testing::TestWithParam<std::string> {};
 
-struct PlaneStrainValues {
-  std::vector<std::array<double, 4>> P;
-  std::vector<std::array<double, 16>> A;
+// Any dimension: P, A = dP/dF and W of a model at deformation gradients F (row-major).
+template <int Dim>
+struct DimValues {
+  std::vector<std::vector<double>> P, A;
   std::vector<double> W, stressZZ;
 };
 
-PlaneStrainValues evaluate2D(const std::string& model,
-                             const std::vector<std::array<double, 4>>& F) {
+template <int Dim>
+DimValues<Dim> evaluateIn(const std::string& model, const std::vector<std::vector<double>>& F) {
   Teuchos::ParameterList p;
   p.set("Model", model);
   p.set("E", 1000.0);
   p.set("nu", 0.3);
   validateParameters(p, materialValidParameters());
-  auto m = createMaterial<2>("m", p);
+  auto m = createMaterial<Dim>("m", p);
   const std::size_t n = F.size();
-  ParticleSet<2> ps(n);
-  const Materials<2> materials = {m};
+  ParticleSet<Dim> ps(n);
+  const Materials<Dim> materials = {m};
   prepare(ps, materials);
-  ParticleSet<2>::Tensors Fv("F", n), P("P", n);
-  Material<2>::Tangents A("A", n);
-  ParticleSet<2>::Scalars W("W", n), szz("szz", n);
+  typename ParticleSet<Dim>::Tensors Fv("F", n), P("P", n);
+  typename Material<Dim>::Tangents A("A", n);
+  typename ParticleSet<Dim>::Scalars W("W", n), szz("szz", n);
   auto Fh = Kokkos::create_mirror_view(Fv);
   for (std::size_t q = 0; q < n; ++q)
-    for (int k = 0; k < 4; ++k)
-      Fh(q, k / 2, k % 2) = F[q][k];
+    for (int k = 0; k < Dim * Dim; ++k)
+      Fh(q, k / Dim, k % Dim) = F[q][k];
   Kokkos::deep_copy(Fv, Fh);
   const auto at = evaluationOf(ps, materials, 0, Fv);
   m->firstPiola(at, P, A);
@@ -286,30 +287,32 @@ PlaneStrainValues evaluate2D(const std::string& model,
   auto Ah = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), A);
   auto Wh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), W);
   auto Sh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), szz);
-  PlaneStrainValues v;
+  DimValues<Dim> v;
   for (std::size_t q = 0; q < n; ++q) {
-    std::array<double, 4> Pq;
-    std::array<double, 16> Aq;
-    for (int k = 0; k < 4; ++k)
-      Pq[k] = Ph(q, k / 2, k % 2);
-    for (int k = 0; k < 16; ++k)
-      Aq[k] = Ah(q, k / 8, (k / 4) % 2, (k / 2) % 2, k % 2);
+    std::vector<double> Pq, Aq;
+    for (int a = 0; a < Dim; ++a)
+      for (int b = 0; b < Dim; ++b) {
+        Pq.push_back(Ph(q, a, b));
+        for (int c = 0; c < Dim; ++c)
+          for (int d = 0; d < Dim; ++d)
+            Aq.push_back(Ah(q, a, b, c, d));
+      }
     v.P.push_back(Pq), v.A.push_back(Aq), v.W.push_back(Wh(q)), v.stressZZ.push_back(Sh(q));
   }
   return v;
 }
 
 TEST_P(EveryPlaneStrainLaw, TangentAndEnergyAreConsistentWithTheStress) {
-  const std::array<double, 4> F = {1.12, 0.23, -0.17, 0.86};  // J = 1.0023
+  const std::vector<double> F = {1.12, 0.23, -0.17, 0.86};  // J = 1.0023
   const double h = 1e-6;
-  std::vector<std::array<double, 4>> Fs = {F};
+  std::vector<std::vector<double>> Fs = {F};
   for (int cd = 0; cd < 4; ++cd)
     for (double s : {-1.0, 1.0}) {
       auto G = F;
       G[cd] += s * h;
       Fs.push_back(G);
     }
-  const auto v = evaluate2D(GetParam(), Fs);
+  const auto v = evaluateIn<2>(GetParam(), Fs);
   for (int cd = 0; cd < 4; ++cd) {
     const std::size_t minus = 1 + 2 * cd, plus = 2 + 2 * cd;
     for (int ab = 0; ab < 4; ++ab)
@@ -317,7 +320,7 @@ TEST_P(EveryPlaneStrainLaw, TangentAndEnergyAreConsistentWithTheStress) {
           << GetParam() << ": A[" << ab << "][" << cd << "]";
     EXPECT_NEAR(v.P[0][cd], (v.W[plus] - v.W[minus]) / (2 * h), 1e-5) << GetParam();
   }
-  const auto rest = evaluate2D(GetParam(), {{1.0, 0.0, 0.0, 1.0}});
+  const auto rest = evaluateIn<2>(GetParam(), {{1.0, 0.0, 0.0, 1.0}});
   const double mu = 1000 / 2.6, lambda = 300 / (1.3 * 0.4);
   for (int k = 0; k < 4; ++k)
     EXPECT_NEAR(rest.P[0][k], 0.0, 1e-12);
@@ -336,6 +339,29 @@ TEST_P(EveryPlaneStrainLaw, TangentAndEnergyAreConsistentWithTheStress) {
 // threshold r/m = 1e-5 and of the tangent's r/m = 0.1) and far apart.  The dual numbers
 // differentiate g1 = (ln(m + r) - ln(m - r))/(2r) through a quotient that cancels as r -> 0
 // (about 1e-16 (m/r)^2 relative), hence no point between 1e-5 and 1e-3.
+// P and A = dP/dF of Hencky's law by dual numbers through ln b (the reference the written
+// tangent is checked against).
+template <int Dim>
+void henckyByDuals(const double F[Dim][Dim], const Lame& k, double P[Dim][Dim],
+                   double A[Dim][Dim][Dim][Dim]) {
+  using D = Dual<Dim * Dim>;
+  D Fd[Dim][Dim], F3[3][3], Finv[3][3], Pd[Dim][Dim];
+  for (int a = 0; a < Dim; ++a)
+    for (int b = 0; b < Dim; ++b)
+      Fd[a][b] = D::variable(F[a][b], Dim * a + b);
+  embed<Dim>(Fd, F3);
+  inverseOf(F3, determinantOf(F3), Finv);
+  const auto eps = scaled(isotropicFunction<Logarithm>(congruence(F3, identityOf<double>())), 0.5);
+  piolaOfKirchhoff<Dim>(henckyStress(eps, k.mu, k.lambda), Finv, Pd);
+  for (int a = 0; a < Dim; ++a)
+    for (int b = 0; b < Dim; ++b) {
+      P[a][b] = Pd[a][b].v;
+      for (int c = 0; c < Dim; ++c)
+        for (int d = 0; d < Dim; ++d)
+          A[a][b][c][d] = Pd[a][b].d[Dim * c + d];
+    }
+}
+
 TEST(Hencky, TangentIsTheExactDerivativeOfTheStress) {
   const Lame k{1000 / 2.6, 300 / (1.3 * 0.4)};
   const auto rotation = [](double t, double R[2][2]) {
@@ -350,15 +376,9 @@ TEST(Hencky, TangentIsTheExactDerivativeOfTheStress) {
       for (int a = 0; a < 2; ++a)
         for (int b = 0; b < 2; ++b)
           F[a][b] = R1[a][0] * s1 * R2[0][b] + R1[a][1] * s2 * R2[1][b];
-      Dual4 Fd[2][2], Finv[2][2], Pd[2][2];
-      seedDeformation(F, Fd);
-      inverseOf(Fd, Fd[0][0] * Fd[1][1] - Fd[0][1] * Fd[1][0], Finv);
-      const PlaneSym<double> identity{1.0, 1.0, 0.0, 1.0};
-      const auto eps = scaled(isotropicFunction<Logarithm>(congruence(Fd, identity)), 0.5);
-      piolaOfKirchhoff(henckyStress(eps, k.mu, k.lambda), Finv, Pd);
       double P[2][2], A[2][2][2][2];
-      unpackPiola(Pd, P, A);
-      const auto v = HenckyLaw::evaluate(F, k);
+      henckyByDuals<2>(F, k, P, A);
+      const auto v = HenckyLaw::evaluate<2>(F, k);
       double largest = 0;
       for (int i = 0; i < 16; ++i)
         largest = std::max(largest, std::abs(A[i / 8][(i / 4) % 2][(i / 2) % 2][i % 2]));
@@ -378,14 +398,181 @@ INSTANTIATE_TEST_SUITE_P(Material, EveryPlaneStrainLaw,
 TEST(NeoHookean, UniaxialPlaneStrainClosedForm) {
   // F = diag(s, 1): P_xx = mu (s - 1/s) + lambda ln s / s, sigma_zz = lambda ln s / s.
   const double s = 0.8, mu = 1000 / 2.6, lambda = 300 / (1.3 * 0.4);
-  const auto v = evaluate2D("neo-hookean", {{s, 0.0, 0.0, 1.0}});
+  const auto v = evaluateIn<2>("neo-hookean", {{s, 0.0, 0.0, 1.0}});
   EXPECT_NEAR(v.P[0][0], mu * (s - 1 / s) + lambda * std::log(s) / s, 1e-12 * 1000);
   EXPECT_NEAR(v.P[0][3], lambda * std::log(s), 1e-12 * 1000);
   EXPECT_NEAR(v.stressZZ[0], lambda * std::log(s) / s, 1e-12 * 1000);
 }
 
 TEST(NeoHookean, InvertedParticleIsANumericalError) {
-  EXPECT_THROW(evaluate2D("neo-hookean", {{-0.5, 0.0, 0.0, 1.0}}), NumericalError);
+  EXPECT_THROW(evaluateIn<2>("neo-hookean", {{-0.5, 0.0, 0.0, 1.0}}), NumericalError);
+}
+
+}  // namespace
+}  // namespace impm
+
+namespace impm {
+namespace {
+
+// A general 3-D F: stretch, shear and rotation, J = det F = 0.97...
+const std::vector<double> kGeneralF3 = {1.12, 0.23, -0.05, -0.17, 0.86, 0.11, 0.08, -0.14, 1.03};
+
+// 3-D laws: A = dP/dF and P = dW/dF by central differences (step 1e-6) at a general F; at
+// F = I, P = 0, W = 0 and the small-strain tangent.
+class Every3DLaw : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Every3DLaw, TangentAndEnergyAreConsistentWithTheStress) {
+  const double h = 1e-6;
+  std::vector<std::vector<double>> Fs = {kGeneralF3};
+  for (int cd = 0; cd < 9; ++cd)
+    for (double s : {-1.0, 1.0}) {
+      auto G = kGeneralF3;
+      G[cd] += s * h;
+      Fs.push_back(G);
+    }
+  const auto v = evaluateIn<3>(GetParam(), Fs);
+  for (int cd = 0; cd < 9; ++cd) {
+    const std::size_t minus = 1 + 2 * cd, plus = 2 + 2 * cd;
+    for (int ab = 0; ab < 9; ++ab)
+      EXPECT_NEAR(v.A[0][ab * 9 + cd], (v.P[plus][ab] - v.P[minus][ab]) / (2 * h), 1e-5)
+          << GetParam() << ": A[" << ab << "][" << cd << "]";
+    EXPECT_NEAR(v.P[0][cd], (v.W[plus] - v.W[minus]) / (2 * h), 1e-5) << GetParam();
+  }
+  const auto rest = evaluateIn<3>(GetParam(), {{1, 0, 0, 0, 1, 0, 0, 0, 1}});
+  const double mu = 1000 / 2.6, lambda = 300 / (1.3 * 0.4);
+  for (int k = 0; k < 9; ++k)
+    EXPECT_NEAR(rest.P[0][k], 0.0, 1e-12);
+  EXPECT_NEAR(rest.W[0], 0.0, 1e-12);
+  for (int k = 0; k < 81; ++k) {
+    const int a = k / 27, b = (k / 9) % 3, c = (k / 3) % 3, d = k % 3;
+    const double expected =
+        lambda * (a == b) * (c == d) + mu * ((a == c) * (b == d) + (a == d) * (b == c));
+    EXPECT_NEAR(rest.A[0][k], expected, 1e-9) << GetParam() << " at F = I, entry " << k;
+  }
+}
+
+// Plane strain is the 3-D law at F_zz = 1: the 2-D P, A and W equal the in-plane entries of
+// the 3-D law's at F = [[F2, 0], [0, 1]], and the 2-D sigma_zz is the 3-D P_zz / J, to
+// round-off.
+TEST_P(Every3DLaw, PlaneStrainIsTheThreeDimensionalLawAtUnitOutOfPlaneStretch) {
+  const std::vector<double> F2 = {1.12, 0.23, -0.17, 0.86};
+  const std::vector<double> F3 = {F2[0], F2[1], 0.0, F2[2], F2[3], 0.0, 0.0, 0.0, 1.0};
+  const auto two = evaluateIn<2>(GetParam(), {F2});
+  const auto three = evaluateIn<3>(GetParam(), {F3});
+  const double scale = 1000.0;
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b) {
+      EXPECT_NEAR(two.P[0][2 * a + b], three.P[0][3 * a + b], 1e-13 * scale) << a << b;
+      for (int c = 0; c < 2; ++c)
+        for (int d = 0; d < 2; ++d)
+          EXPECT_NEAR(two.A[0][8 * a + 4 * b + 2 * c + d], three.A[0][27 * a + 9 * b + 3 * c + d],
+                      1e-13 * scale)
+              << a << b << c << d;
+    }
+  EXPECT_NEAR(two.W[0], three.W[0], 1e-13 * scale);
+  const double J = F2[0] * F2[3] - F2[1] * F2[2];
+  EXPECT_NEAR(two.stressZZ[0], three.P[0][8] / J, 1e-13 * scale);
+}
+
+INSTANTIATE_TEST_SUITE_P(Material, Every3DLaw,
+                         ::testing::Values("linear-elastic", "neo-hookean", "hencky"));
+
+// Objectivity of the finite-strain 3-D laws: a rotation Q superposed on F gives P(Q F) =
+// Q P(F) and the same energy, for a rotation about an axis that is no coordinate axis.
+TEST(Material3D, FiniteStrainLawsAreObjective) {
+  const double angle = 0.7, n[3] = {1.0 / 3.0, 2.0 / 3.0, 2.0 / 3.0};  // unit axis
+  double Q[3][3];
+  const double c = std::cos(angle), s = std::sin(angle);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const double cross = (i == j) ? 0.0 : ((j == (i + 1) % 3) ? -n[(i + 2) % 3] : n[(i + 1) % 3]);
+      Q[i][j] = c * (i == j) + (1 - c) * n[i] * n[j] + s * cross;
+    }
+  std::vector<double> QF(9, 0.0);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        QF[3 * i + j] += Q[i][k] * kGeneralF3[3 * k + j];
+  for (const char* model : {"neo-hookean", "hencky"}) {
+    const auto v = evaluateIn<3>(model, {kGeneralF3, QF});
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        double QP = 0.0;
+        for (int k = 0; k < 3; ++k)
+          QP += Q[i][k] * v.P[0][3 * k + j];
+        EXPECT_NEAR(v.P[1][3 * i + j], QP, 1e-10) << model << " " << i << j;
+      }
+    EXPECT_NEAR(v.W[1], v.W[0], 1e-10) << model;
+  }
+}
+
+// Hencky's 3-D tangent at stretches with three, two and no equal principal values, and values
+// that nearly coincide (either side of the divided differences' series threshold 1e-5):
+// against central differences of the stress (the stress from eigenvalues alone, the tangent
+// by the Daleckii-Krein formula), and the written-out tangent against the dual numbers.
+TEST(Hencky, ThreeDimensionalTangentIsSmoothAtRepeatedStretches) {
+  const Lame k{1000 / 2.6, 300 / (1.3 * 0.4)};
+  // Rotations about two general axes (Rodrigues).
+  const auto rotation = [](double angle, const double n[3], double R[3][3]) {
+    const double c = std::cos(angle), s = std::sin(angle);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        const double cross =
+            (i == j) ? 0.0 : ((j == (i + 1) % 3) ? -n[(i + 2) % 3] : n[(i + 1) % 3]);
+        R[i][j] = c * (i == j) + (1 - c) * n[i] * n[j] + s * cross;
+      }
+  };
+  const double n1[3] = {1.0 / 3.0, 2.0 / 3.0, 2.0 / 3.0}, n2[3] = {0.6, 0.0, -0.8};
+  double R1[3][3], R2[3][3];
+  rotation(0.9, n1, R1), rotation(-0.5, n2, R2);
+  const double stretches[][3] = {{1.0, 1.0, 1.0},        {0.9, 0.9, 0.9},
+                                 {1.2, 1.2, 0.8},        {0.85, 1.1, 1.1},
+                                 {1.1, 1.1 + 1e-7, 0.9}, {1.1, 1.1 * (1 + 1e-4), 0.9},
+                                 {1.05, 0.95, 1.2}};
+  for (const auto& st : stretches) {
+    double F[3][3];
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) {
+        F[a][b] = 0.0;
+        for (int m = 0; m < 3; ++m)
+          F[a][b] += R1[a][m] * st[m] * R2[m][b];
+      }
+    const auto v = HenckyLaw::evaluate<3>(F, k);
+    double P[3][3], A[3][3][3][3];
+    henckyByDuals<3>(F, k, P, A);
+    const double h = 1e-6;
+    for (int c = 0; c < 3; ++c)
+      for (int d = 0; d < 3; ++d) {
+        double Fp[3][3], Fm[3][3];
+        std::copy(&F[0][0], &F[0][0] + 9, &Fp[0][0]);
+        std::copy(&F[0][0], &F[0][0] + 9, &Fm[0][0]);
+        Fp[c][d] += h, Fm[c][d] -= h;
+        const auto vp = HenckyLaw::evaluate<3>(Fp, k), vm = HenckyLaw::evaluate<3>(Fm, k);
+        for (int a = 0; a < 3; ++a)
+          for (int b = 0; b < 3; ++b) {
+            EXPECT_NEAR(v.A[a][b][c][d], (vp.P[a][b] - vm.P[a][b]) / (2 * h), 1e-5 * 1000)
+                << "stretches " << st[0] << " " << st[1] << " " << st[2];
+            EXPECT_NEAR(v.A[a][b][c][d], A[a][b][c][d], 1e-10 * 1000);
+          }
+      }
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        EXPECT_NEAR(v.P[a][b], P[a][b], 1e-12 * 1000);
+  }
+}
+
+// A 2-D model that has no 3-D form is refused by name in a 3-D deck.
+TEST(Material3D, ModelsWithoutAThreeDimensionalFormAreNamed) {
+  Teuchos::ParameterList p;
+  p.set("Model", std::string("linear"));
+  p.set("E", 1000.0);
+  validateParameters(p, materialValidParameters());
+  try {
+    createMaterial<3>("m", p);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is not a 3-D model"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -36,48 +36,43 @@ std::shared_ptr<Material<2>> planeStrainLaw(const std::string& model, double yie
   return createMaterial<2>("m", p);
 }
 
-// One material point (several copies, to evaluate perturbed F in one call) carried along a
-// deformation path: evaluate at trial F, commit the trial state of copy 0 to every copy.
-class Point {
+// A material point of any dimension (several copies, to evaluate perturbed F in one call)
+// carried along a deformation path: F row-major (Dim * Dim entries), evaluated at trial F,
+// every copy committed to copy 0's trial state.
+template <int Dim>
+class PointIn {
  public:
-  Point(std::shared_ptr<Material<2>> law, std::size_t copies)
+  explicit PointIn(std::shared_ptr<Material<Dim>> law, std::size_t copies)
       : materials_{std::move(law)}, particles_(copies) {
     declareMaterialVariables(particles_, materials_);
     initializeMaterials(particles_, materials_, true);
-    trial_ = std::make_unique<TrialState<2>>(particles_, materials_);
+    trial_ = std::make_unique<TrialState<Dim>>(particles_, materials_);
   }
-
-  struct Values {
-    std::vector<Matrix> P;
-    std::vector<std::array<double, 16>> A;
-  };
-
-  Values evaluate(const std::vector<Matrix>& F) {
+  // P (row-major) and A (a, b, c, d row-major) at every copy.
+  std::pair<std::vector<std::vector<double>>, std::vector<std::vector<double>>> evaluate(
+      const std::vector<std::vector<double>>& F) {
     const std::size_t n = particles_.size();
-    ParticleSet<2>::Tensors Fv("F", n), P("P", n);
-    Material<2>::Tangents A("A", n);
+    typename ParticleSet<Dim>::Tensors Fv("F", n), P("P", n);
+    typename Material<Dim>::Tangents A("A", n);
     auto Fh = Kokkos::create_mirror_view(Fv);
     for (std::size_t q = 0; q < n; ++q)
-      for (int k = 0; k < 4; ++k)
-        Fh(q, k / 2, k % 2) = F.at(q)[k];
+      for (int k = 0; k < Dim * Dim; ++k)
+        Fh(q, k / Dim, k % Dim) = F.at(q)[k];
     Kokkos::deep_copy(Fv, Fh);
     materials_[0]->firstPiola(evaluationOf(particles_, materials_, 0, Fv, trial_->of(0)), P, A);
     auto Ph = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), P);
     auto Ah = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), A);
-    Values v;
-    for (std::size_t q = 0; q < n; ++q) {
-      Matrix Pq;
-      std::array<double, 16> Aq;
-      for (int k = 0; k < 4; ++k)
-        Pq[k] = Ph(q, k / 2, k % 2);
-      for (int k = 0; k < 16; ++k)
-        Aq[k] = Ah(q, k / 8, (k / 4) % 2, (k / 2) % 2, k % 2);
-      v.P.push_back(Pq), v.A.push_back(Aq);
-    }
-    return v;
+    std::vector<std::vector<double>> Ps(n), As(n);
+    for (std::size_t q = 0; q < n; ++q)
+      for (int a = 0; a < Dim; ++a)
+        for (int b = 0; b < Dim; ++b) {
+          Ps[q].push_back(Ph(q, a, b));
+          for (int c = 0; c < Dim; ++c)
+            for (int d = 0; d < Dim; ++d)
+              As[q].push_back(Ah(q, a, b, c, d));
+        }
+    return {Ps, As};
   }
-
-  // The trial state of copy 0 becomes every copy's state.
   void commit() {
     for (const auto& t : trial_->of(0)) {
       auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), t);
@@ -88,21 +83,45 @@ class Point {
     }
     commitMaterialState(particles_, materials_, *trial_);
   }
-
-  // Component c of variable `name` in the trial state of copy 0.
-  double trial(std::size_t k, int c) const {
-    auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), trial_->of(0).at(k));
-    return h(0, c);
-  }
   double committed(const std::string& name, int c) const {
     auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles_.values(name));
     return h(0, c);
   }
+  // Component c of trial variable k of copy 0.
+  double trial(std::size_t k, int c) const {
+    auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), trial_->of(0).at(k));
+    return h(0, c);
+  }
 
  private:
-  Materials<2> materials_;
-  ParticleSet<2> particles_;
-  std::unique_ptr<TrialState<2>> trial_;
+  Materials<Dim> materials_;
+  ParticleSet<Dim> particles_;
+  std::unique_ptr<TrialState<Dim>> trial_;
+};
+
+// The 2-D point with P and A as fixed-size arrays.
+class Point : public PointIn<2> {
+ public:
+  using PointIn<2>::PointIn;
+  struct Values {
+    std::vector<Matrix> P;
+    std::vector<std::array<double, 16>> A;
+  };
+  Values evaluate(const std::vector<Matrix>& F) {
+    std::vector<std::vector<double>> rows;
+    for (const auto& f : F)
+      rows.emplace_back(f.begin(), f.end());
+    const auto [P, A] = PointIn<2>::evaluate(rows);
+    Values v;
+    for (std::size_t q = 0; q < P.size(); ++q) {
+      Matrix Pq;
+      std::array<double, 16> Aq;
+      std::copy(P[q].begin(), P[q].end(), Pq.begin());
+      std::copy(A[q].begin(), A[q].end(), Aq.begin());
+      v.P.push_back(Pq), v.A.push_back(Aq);
+    }
+    return v;
+  }
 };
 
 // Largest |A - dP/dF (central differences, step h)| relative to max |A|, at F from the
@@ -466,6 +485,116 @@ TEST(J2Law1D, LoadingPastYieldAndUnloadingFollowTheExactBilinearLaw) {
   const double alpha = peak - yield / E - (expected - yield) / E;
   const auto reversed = at(1.0 + plastic - (yield + H * alpha) / E - 0.01);
   EXPECT_NEAR(reversed.first, -(yield + H * alpha) - E * H / (E + H) * 0.01, 1e-12 * E);
+}
+
+}  // namespace
+}  // namespace impm
+
+namespace impm {
+namespace {
+
+template <int Dim>
+std::shared_ptr<Material<Dim>> plasticLaw(const std::string& model) {
+  Teuchos::ParameterList p;
+  p.set("Model", model);
+  p.set("E", kE);
+  p.set("nu", kNu);
+  if (model == "j2") {
+    p.set("Yield Stress", kYield);
+    p.set("Hardening Modulus", kH);
+  } else {
+    p.set("Cohesion", 1.0);
+    p.set("Friction Angle", 30.0);
+    p.set("Dilation Angle", 10.0);
+  }
+  validateParameters(p, materialValidParameters());
+  return createMaterial<Dim>("m", p);
+}
+
+// Largest |A - dP/dF (central differences, h = 1e-6)| relative to max |A|, 3-D.
+double tangentError3D(PointIn<3>& point, const std::vector<double>& F) {
+  const double h = 1e-6;
+  std::vector<std::vector<double>> Fs = {F};
+  for (int cd = 0; cd < 9; ++cd)
+    for (double s : {-1.0, 1.0}) {
+      auto G = F;
+      G[cd] += s * h;
+      Fs.push_back(G);
+    }
+  const auto [P, A] = point.evaluate(Fs);
+  double worst = 0, scale = 0;
+  for (double a : A[0])
+    scale = std::max(scale, std::abs(a));
+  for (int cd = 0; cd < 9; ++cd)
+    for (int ab = 0; ab < 9; ++ab)
+      worst = std::max(
+          worst, std::abs(A[0][ab * 9 + cd] - (P[2 + 2 * cd][ab] - P[1 + 2 * cd][ab]) / (2 * h)));
+  return worst / scale;
+}
+
+// The 3-D return maps: tangents against central differences at plastic states reached along
+// a 3-D path (compression with shear in every plane), from a hardened state, and unloading.
+TEST(Plasticity3D, TangentIsTheDerivativeOfTheReturnAlongAThreeDimensionalPath) {
+  for (const char* model : {"j2", "drucker-prager"}) {
+    PointIn<3> point(plasticLaw<3>(model), 19);
+    // Stretch in x and z, compression in y, shear in every plane: the mean stress is
+    // tensile, so the cone yields too.
+    const std::vector<double> general = {1.02,  0.02,  -0.015, -0.01, 0.975,
+                                         0.025, 0.012, -0.02,  1.015};
+    const double first = tangentError3D(point, general);
+    EXPECT_LT(first, 1e-7) << model << ": plastic from the virgin state";
+    for (int i = 1; i <= 5; ++i) {  // load along the path and commit
+      std::vector<double> Fi(9);
+      for (int k = 0; k < 9; ++k)
+        Fi[k] = (k % 4 == 0 ? 1.0 : 0.0) + (general[k] - (k % 4 == 0 ? 1.0 : 0.0)) * i / 5.0 * 1.5;
+      point.evaluate(std::vector<std::vector<double>>(19, Fi));
+      point.commit();
+    }
+    EXPECT_GT(point.committed("equivalent_plastic_strain", 0), 0.0) << model;
+    const std::vector<double> further = {1.035, 0.035, -0.02, -0.015, 0.96,
+                                         0.04,  0.02,  -0.03, 1.025};
+    const double hardened = tangentError3D(point, further);
+    EXPECT_LT(hardened, 1e-7) << model << ": plastic from a plastic state";
+    std::cout << "  " << model
+              << " 3-D tangent, relative error against central differences: " << first
+              << " (first yield), " << hardened << " (from a plastic state)\n";
+  }
+}
+
+// Plane strain is the 3-D law at F_zz = 1, plastic states included: a 2-D compression path
+// with shear run through the 2-D law and through the 3-D law with F = [[F2, 0], [0, 1]]
+// gives the same in-plane P, tangent and equivalent plastic strain at every step, to
+// round-off (the 2-D law takes the in-plane closed form of ln, the 3-D one the eigenvectors).
+TEST(Plasticity3D, PlaneStrainIsTheThreeDimensionalLawAtUnitOutOfPlaneStretch) {
+  for (const char* model : {"j2", "drucker-prager"}) {
+    PointIn<2> two(plasticLaw<2>(model), 1);
+    PointIn<3> three(plasticLaw<3>(model), 1);
+    double worstP = 0, worstA = 0;
+    for (int i = 1; i <= 8; ++i) {
+      const double s = 1.0 - 0.01 * i, g = 0.004 * i;
+      const std::vector<double> F2 = {1.0, g, 0.0, s};
+      const std::vector<double> F3 = {1.0, g, 0.0, 0.0, s, 0.0, 0.0, 0.0, 1.0};
+      const auto [P2, A2] = two.evaluate({F2});
+      const auto [P3, A3] = three.evaluate({F3});
+      for (int a = 0; a < 2; ++a)
+        for (int b = 0; b < 2; ++b) {
+          worstP = std::max(worstP, std::abs(P2[0][2 * a + b] - P3[0][3 * a + b]));
+          for (int c = 0; c < 2; ++c)
+            for (int d = 0; d < 2; ++d)
+              worstA = std::max(worstA, std::abs(A2[0][8 * a + 4 * b + 2 * c + d] -
+                                                 A3[0][27 * a + 9 * b + 3 * c + d]));
+        }
+      two.commit(), three.commit();
+      EXPECT_NEAR(two.committed("equivalent_plastic_strain", 0),
+                  three.committed("equivalent_plastic_strain", 0), 1e-13)
+          << model << " step " << i;
+    }
+    EXPECT_GT(two.committed("equivalent_plastic_strain", 0), 0.0) << model;
+    EXPECT_LT(worstP, 1e-11 * kE) << model;
+    EXPECT_LT(worstA, 1e-10 * kE) << model;
+    std::cout << "  " << model << ": 2-D against 3-D at F_zz = 1, largest difference in P "
+              << worstP << ", in A " << worstA << "\n";
+  }
 }
 
 }  // namespace

@@ -63,7 +63,7 @@ bool Image::contains(const double* x) const {
 
 std::vector<Seed<2>> Image::fill(const GridGeometry<2>& grid, int perCell, bool gauss) const {
   if (gauss)
-    return SubCellShape::fill(grid, perCell, gauss);
+    return SubCellShape<2>::fill(grid, perCell, gauss);
   const int n = perPixel_;
   const double h = pixel_ / n;
   std::size_t selectedPixels = 0;

@@ -17,7 +17,7 @@
 
 namespace impm {
 
-class Image : public SubCellShape {
+class Image : public SubCellShape<2> {
  public:
   static void declareParameters(Teuchos::ParameterList& valid);
   // Reads the image; throws FileError for an unreadable file and InputError naming

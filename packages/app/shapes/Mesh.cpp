@@ -173,7 +173,7 @@ bool Mesh::contains(const double* x) const {
 
 std::vector<Seed<2>> Mesh::fill(const GridGeometry<2>& grid, int perCell, bool gauss) const {
   if (gauss)
-    return subCellFill(*this, grid, perCell, gauss);
+    return subCellFill<2>(*this, grid, perCell, gauss);
   std::vector<Seed<2>> seeds(elements_.size());
   for (std::size_t e = 0; e < elements_.size(); ++e) {
     Seed<2>& s = seeds[e];

@@ -8,7 +8,7 @@
 
 namespace impm {
 
-class Polygon : public SubCellShape {
+class Polygon : public SubCellShape<2> {
  public:
   static void declareParameters(Teuchos::ParameterList& valid);
   Polygon(const Teuchos::ParameterList& params, const std::string& path);

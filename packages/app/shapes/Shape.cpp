@@ -15,47 +15,72 @@ double Shape<Dim>::boxDistance(const double* x) const {
   return std::sqrt(s);
 }
 
-std::vector<Seed<2>> SubCellShape::fill(const GridGeometry<2>& g, int perCell, bool gauss) const {
-  return subCellFill(*this, g, perCell, gauss);
+namespace {
+
+// Calls f(idx) for every index with lo[d] <= idx[d] < hi[d], x fastest (a rank-independent
+// order).
+template <int Dim, class Fn>
+void forEachIndex(const int lo[Dim], const int hi[Dim], Fn&& f) {
+  for (int d = 0; d < Dim; ++d)
+    if (lo[d] >= hi[d])
+      return;
+  int idx[Dim];
+  std::copy(lo, lo + Dim, idx);
+  while (true) {
+    f(idx);
+    int d = 0;
+    while (d < Dim && ++idx[d] == hi[d])
+      idx[d] = lo[d], ++d;
+    if (d == Dim)
+      return;
+  }
 }
 
-std::vector<Seed<2>> subCellFill(const Shape<2>& shape, const GridGeometry<2>& g, int perCell,
-                                 bool gauss) {
+}  // namespace
+
+template <int Dim>
+std::vector<Seed<Dim>> subCellFill(const Shape<Dim>& shape, const GridGeometry<Dim>& g, int perCell,
+                                   bool gauss) {
   const auto& lower = shape.lower();
   const auto& upper = shape.upper();
-  const auto contains = [&](const double* x) { return shape.contains(x); };
   const int n = gauss ? 2 : perCell;
-  int lo[2], hi[2];
-  for (int d = 0; d < 2; ++d) {
+  int lo[Dim], hi[Dim], first[Dim] = {}, last[Dim];
+  double volume = 1.0;
+  for (int d = 0; d < Dim; ++d) {
     lo[d] = std::max(0, static_cast<int>(std::floor(g.gridCoord(d, lower[d]))));
     hi[d] = std::min(g.cells[d], static_cast<int>(std::ceil(g.gridCoord(d, upper[d]))));
+    last[d] = n;
+    volume *= g.spacing[d] / n;
   }
-  const double hx = g.spacing[0], hy = g.spacing[1];
   const double off = 0.5 / std::sqrt(3.0);  // Gauss points at +-1/sqrt(3) of the half-cell
-  std::vector<Seed<2>> seeds;
-  for (int j = lo[1]; j < hi[1]; ++j)
-    for (int i = lo[0]; i < hi[0]; ++i) {
-      const double centre[2] = {g.nodeCoord(0, i) + hx / 2, g.nodeCoord(1, j) + hy / 2};
-      if (gauss && !contains(centre))
-        continue;
-      for (int s = 0; s < n; ++s)
-        for (int r = 0; r < n; ++r) {
-          Seed<2> seed{};
-          seed.x[0] =
-              gauss ? centre[0] + (r ? off : -off) * hx : g.nodeCoord(0, i) + (r + 0.5) * hx / n;
-          seed.x[1] =
-              gauss ? centre[1] + (s ? off : -off) * hy : g.nodeCoord(1, j) + (s + 0.5) * hy / n;
-          if (!gauss && !contains(seed.x))
-            continue;
-          seed.half[0][0] = hx / (2 * n), seed.half[1][1] = hy / (2 * n);
-          seed.volume = hx * hy / (n * n);
-          seeds.push_back(seed);
-        }
-    }
+  std::vector<Seed<Dim>> seeds;
+  forEachIndex<Dim>(lo, hi, [&](const int* cell) {
+    double centre[Dim];
+    for (int d = 0; d < Dim; ++d)
+      centre[d] = g.nodeCoord(d, cell[d]) + 0.5 * g.spacing[d];
+    if (gauss && !shape.contains(centre))
+      return;
+    forEachIndex<Dim>(first, last, [&](const int* sub) {
+      Seed<Dim> seed{};
+      for (int d = 0; d < Dim; ++d) {
+        const double h = g.spacing[d];
+        seed.x[d] = gauss ? centre[d] + (sub[d] ? off : -off) * h
+                          : g.nodeCoord(d, cell[d]) + (sub[d] + 0.5) * h / n;
+        seed.half[d][d] = h / (2 * n);
+      }
+      if (!gauss && !shape.contains(seed.x))
+        return;
+      seed.volume = volume;
+      seeds.push_back(seed);
+    });
+  });
   return seeds;
 }
 
+template std::vector<Seed<2>> subCellFill<2>(const Shape<2>&, const GridGeometry<2>&, int, bool);
+template std::vector<Seed<3>> subCellFill<3>(const Shape<3>&, const GridGeometry<3>&, int, bool);
 template class Shape<1>;
 template class Shape<2>;
+template class Shape<3>;
 
 }  // namespace impm

@@ -1,14 +1,14 @@
 #pragma once
 // The region a body occupies in the reference configuration, and the integration points that
-// fill it.  One file per shape (Interval, Rectangle, Disk, Polygon); ShapeFactory turns
+// fill it.  One file per shape (Interval, Box, Ball, Cylinder, Polygon, ...); ShapeFactory turns
 // Bodies/<name>/Shape into one.  A shape answers two questions: is a point material
 // (contains), and which particles, with their domains and volumes, fill the body (fill).
-// The 2-D shapes here are filled on the grid (SubCellShape): a particle at the centre of
-// every n x n sub-cell whose centre the shape contains, the sub-cell being its domain, and
-// fem's Gauss points in the cells whose centre it contains.  A shape that knows better (the
-// 1-D interval's equal particles, a mesh's elements, an image's pixels) fills itself.
-// Shapes that carry boundary names (a mesh's side sets) list them: the bit k of a seed's
-// face mask is sideSets()[k].
+// The 2-D and 3-D shapes given by numbers are filled on the grid (SubCellShape): a particle at
+// the centre of every n x n (x n) sub-cell whose centre the shape contains, the sub-cell being its
+// domain, and fem's Gauss points in the cells whose centre it contains.  A shape that knows better
+// (the 1-D interval's equal particles, a mesh's elements, an image's pixels) fills itself. Shapes
+// that carry boundary names (a mesh's side sets) list them: the bit k of a seed's face mask is
+// sideSets()[k].
 
 #include <array>
 #include <string>
@@ -67,14 +67,19 @@ class Shape {
   std::array<double, Dim> lower_{}, upper_{};
 };
 
-// The sub-cell filling (above) of any 2-D shape.
-std::vector<Seed<2>> subCellFill(const Shape<2>& shape, const GridGeometry<2>& grid, int perCell,
-                                 bool gauss);
+// The sub-cell filling (above) of any shape of 2 or 3 dimensions: n^Dim sub-cells per cell.
+template <int Dim>
+std::vector<Seed<Dim>> subCellFill(const Shape<Dim>& shape, const GridGeometry<Dim>& grid,
+                                   int perCell, bool gauss);
 
-// A 2-D shape filled on the grid's sub-cells (above).
-class SubCellShape : public Shape<2> {
+// A shape filled on the grid's sub-cells (above).
+template <int Dim>
+class SubCellShape : public Shape<Dim> {
  public:
-  std::vector<Seed<2>> fill(const GridGeometry<2>& grid, int perCell, bool gauss) const override;
+  std::vector<Seed<Dim>> fill(const GridGeometry<Dim>& grid, int perCell,
+                              bool gauss) const override {
+    return subCellFill<Dim>(*this, grid, perCell, gauss);
+  }
 };
 
 }  // namespace impm

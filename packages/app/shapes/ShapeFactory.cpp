@@ -3,12 +3,13 @@
 #include <functional>
 #include <type_traits>
 
-#include "app/shapes/Disk.hpp"
+#include "app/shapes/Ball.hpp"
+#include "app/shapes/Box.hpp"
+#include "app/shapes/Cylinder.hpp"
 #include "app/shapes/Image.hpp"
 #include "app/shapes/Interval.hpp"
 #include "app/shapes/Mesh.hpp"
 #include "app/shapes/Polygon.hpp"
-#include "app/shapes/Rectangle.hpp"
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
 
@@ -26,26 +27,36 @@ struct Entry {
   std::function<void(Teuchos::ParameterList&)> declare;
   Creator<1> create1;  // the one of the shape's dimension is set
   Creator<2> create2;
+  Creator<3> create3;
 };
 
 template <class S>
+constexpr int dimensionOf() {
+  return std::is_base_of_v<Shape<1>, S> ? 1 : (std::is_base_of_v<Shape<2>, S> ? 2 : 3);
+}
+
+template <class S>
 Entry entry(const std::string& name) {
-  Entry e{name, std::is_base_of_v<Shape<1>, S> ? 1 : 2, &S::declareParameters, {}, {}};
+  constexpr int dim = dimensionOf<S>();
+  Entry e{name, dim, &S::declareParameters, {}, {}, {}};
   const auto make = [](const Teuchos::ParameterList& p, const std::string& path) {
     return std::make_shared<const S>(p, path);
   };
-  if constexpr (std::is_base_of_v<Shape<1>, S>)
+  if constexpr (dim == 1)
     e.create1 = make;
-  else
+  else if constexpr (dim == 2)
     e.create2 = make;
+  else
+    e.create3 = make;
   return e;
 }
 
 // The registration lines: one per shape.
 const std::vector<Entry>& registry() {
   static const std::vector<Entry> shapes = {
-      entry<Interval>("interval"), entry<Rectangle>("rectangle"), entry<Disk>("disk"),
-      entry<Polygon>("polygon"),   entry<Image>("image"),         entry<Mesh>("mesh"),
+      entry<Interval>("interval"), entry<Box<2>>("rectangle"), entry<Ball<2>>("disk"),
+      entry<Polygon>("polygon"),   entry<Image>("image"),      entry<Mesh>("mesh"),
+      entry<Box<3>>("box"),        entry<Ball<3>>("sphere"),   entry<Cylinder>("cylinder"),
   };
   return shapes;
 }
@@ -58,7 +69,7 @@ void declareShapeParameters(Teuchos::ParameterList& valid) {
     names.push_back(e.name);
   declareChoice(valid, "Shape", "interval", names,
                 "Geometry of the body in the reference configuration: interval (1-D); "
-                "rectangle, disk, polygon, image or mesh (2-D)");
+                "rectangle, disk, polygon, image or mesh (2-D); box, sphere or cylinder (3-D)");
   for (const auto& e : registry())
     e.declare(valid.sublist("[Shape=" + e.name + "]"));
 }
@@ -75,8 +86,10 @@ std::shared_ptr<const Shape<Dim>> createShape(const Teuchos::ParameterList& para
                                             "-D but the grid is " + std::to_string(Dim) + "-D");
     if constexpr (Dim == 1)
       return e.create1(params, path);
-    else
+    else if constexpr (Dim == 2)
       return e.create2(params, path);
+    else
+      return e.create3(params, path);
   }
   throw std::logic_error("unregistered shape " + name);
 }
@@ -84,6 +97,8 @@ std::shared_ptr<const Shape<Dim>> createShape(const Teuchos::ParameterList& para
 template std::shared_ptr<const Shape<1>> createShape<1>(const Teuchos::ParameterList&,
                                                         const std::string&);
 template std::shared_ptr<const Shape<2>> createShape<2>(const Teuchos::ParameterList&,
+                                                        const std::string&);
+template std::shared_ptr<const Shape<3>> createShape<3>(const Teuchos::ParameterList&,
                                                         const std::string&);
 
 }  // namespace impm
