@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "core/Axes.hpp"
 #include "core/Collective.hpp"
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
@@ -299,7 +300,7 @@ Output<Dim>::Output(const Teuchos::ParameterList& params, const std::string& dir
     elements.push_back(c.exodus);
   particleFile_ = std::make_unique<ExodusFile>(base + "_particles.exo", "impm particles", points,
                                                nodal, elements, globalNames, keep);
-  if (Dim == 2 && domains_ != Domains::none)  // 3-D domains: not yet written
+  if (Dim > 1 && domains_ != Domains::none)  // 1-D domains are the particles' segments
     domainFile_ =
         std::make_unique<ExodusFile>(base + "_domains.exo", "impm particle domains",
                                      domainMesh(table), nodal, elements, globalNames, keep);
@@ -315,45 +316,47 @@ namespace {
 
 // The columns that place the domain corners, looked up by name once per table (not once per
 // particle: a million particles made the lookups a visible part of the output phase).
+template <int Dim>
 struct CornerColumns {
-  // tracked: the corners c1 ... c4; box: gimp's axis-aligned domains; else cpdi's
-  // parallelograms.
+  static constexpr int kCorners = 1 << Dim;
+  // tracked: the corners c1 ... c(2^Dim); box: gimp's axis-aligned domains; else cpdi's
+  // parallelograms (parallelepipeds).
   CornerColumns(const ParticleTable& t, bool reference, bool isTracked, bool isBox)
-      : tracked(isTracked),
-        box(isBox),
-        centre{&t.column(reference ? "X" : "x"), &t.column(reference ? "Y" : "y")} {
+      : tracked(isTracked), box(isBox) {
     const std::string r = reference ? "0" : "";
-    if (tracked) {
-      for (int k = 0; k < 4; ++k)
-        for (int d = 0; d < 2; ++d)
-          columns[2 * k + d] = &t.column("c" + r + std::to_string(k + 1) + (d ? "_y" : "_x"));
-      return;
-    }
-    for (int k = 0; k < 2; ++k)  // the half-vectors r1, r2
-      for (int d = 0; d < 2; ++d)
-        columns[2 * k + d] = &t.column("r" + r + std::to_string(k + 1) + (d ? "_y" : "_x"));
+    for (int d = 0; d < Dim; ++d)
+      centre[d] = &t.column(reference ? referenceAxisName(d) : axisName(d));
+    const int vectors = tracked ? kCorners : Dim;  // the corners, or the half-vectors r_k
+    for (int k = 0; k < vectors; ++k)
+      for (int d = 0; d < Dim; ++d)
+        columns[Dim * k + d] =
+            &t.column((tracked ? "c" : "r") + r + std::to_string(k + 1) + "_" + axisName(d));
   }
-  // Counter-clockwise: (-,-), (+,-), (+,+), (-,+) in the half-vectors r1, r2.
-  std::array<std::array<double, 2>, 4> operator()(std::size_t p) const {
-    std::array<std::array<double, 2>, 4> out;
+  // In Exodus order (QUAD4: counter-clockwise (-,-), (+,-), (+,+), (-,+) in r1, r2; HEX8: the
+  // same at -r3, then at +r3).
+  std::array<std::array<double, Dim>, kCorners> operator()(std::size_t p) const {
+    std::array<std::array<double, Dim>, kCorners> out;
     if (tracked) {
-      for (int k = 0; k < 4; ++k)
-        out[k] = {(*columns[2 * k])[p], (*columns[2 * k + 1])[p]};
+      for (int c = 0; c < kCorners; ++c)
+        for (int d = 0; d < Dim; ++d)
+          out[c][d] = (*columns[Dim * c + d])[p];
       return out;
     }
-    double r1[2] = {(*columns[0])[p], (*columns[1])[p]},
-           r2[2] = {(*columns[2])[p], (*columns[3])[p]};
-    if (box)  // gimp integrates over the box of half-widths r1_x, r2_y
-      r1[1] = 0.0, r2[0] = 0.0;
-    const double sign[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
-    for (int k = 0; k < 4; ++k)
-      out[k] = {(*centre[0])[p] + sign[k][0] * r1[0] + sign[k][1] * r2[0],
-                (*centre[1])[p] + sign[k][0] * r1[1] + sign[k][1] * r2[1]};
+    double half[Dim][Dim];  // half[k][d]: component d of r_k
+    for (int k = 0; k < Dim; ++k)
+      for (int d = 0; d < Dim; ++d)  // gimp integrates over the box of half-widths r_k,k
+        half[k][d] = box && k != d ? 0.0 : (*columns[Dim * k + d])[p];
+    for (int c = 0; c < kCorners; ++c)
+      for (int d = 0; d < Dim; ++d) {
+        out[c][d] = (*centre[d])[p];
+        for (int k = 0; k < Dim; ++k)
+          out[c][d] += (exodusCornerOffset(c, k) ? 1.0 : -1.0) * half[k][d];
+      }
     return out;
   }
   bool tracked, box;
-  const std::vector<double>* centre[2];
-  const std::vector<double>* columns[8] = {};
+  const std::vector<double>* centre[Dim] = {};
+  const std::vector<double>* columns[Dim * kCorners] = {};
 };
 
 }  // namespace
@@ -361,15 +364,16 @@ struct CornerColumns {
 template <int Dim>
 ExodusMesh Output<Dim>::domainMesh(const ParticleTable& table) const {
   ExodusMesh mesh;
-  mesh.dimension = 2;
-  mesh.coords.resize(2);
-  mesh.elementType = "QUAD4";
-  mesh.nodesPerElement = 4;
-  const CornerColumns reference(table, true, domains_ == Domains::corners,
-                                domains_ == Domains::box);
+  mesh.dimension = Dim;
+  mesh.coords.resize(Dim);
+  mesh.elementType = Dim == 2 ? "QUAD4" : "HEX8";
+  mesh.nodesPerElement = 1 << Dim;
+  const CornerColumns<Dim> reference(table, true, domains_ == Domains::corners,
+                                     domains_ == Domains::box);
   for (GlobalId p = 0; p < totalParticles_; ++p) {
     for (const auto& c : reference(p)) {
-      mesh.coords[0].push_back(c[0]), mesh.coords[1].push_back(c[1]);
+      for (int d = 0; d < Dim; ++d)
+        mesh.coords[d].push_back(c[d]);
       mesh.connectivity.push_back(static_cast<int>(mesh.coords[0].size()));
     }
     mesh.elementIds.push_back(static_cast<int>(p + 1));
@@ -380,13 +384,14 @@ ExodusMesh Output<Dim>::domainMesh(const ParticleTable& table) const {
 template <int Dim>
 std::vector<std::vector<double>> Output<Dim>::domainDisplacements(
     const ParticleTable& table) const {
-  std::vector<std::vector<double>> u(2);
+  std::vector<std::vector<double>> u(Dim);
   const bool tracked = domains_ == Domains::corners, box = domains_ == Domains::box;
-  const CornerColumns current(table, false, tracked, box), reference(table, true, tracked, box);
+  const CornerColumns<Dim> current(table, false, tracked, box),
+      reference(table, true, tracked, box);
   for (GlobalId p = 0; p < totalParticles_; ++p) {
     const auto now = current(p), then = reference(p);
-    for (int k = 0; k < 4; ++k)
-      for (int d = 0; d < 2; ++d)
+    for (int k = 0; k < (1 << Dim); ++k)
+      for (int d = 0; d < Dim; ++d)
         u[d].push_back(now[k][d] - then[k][d]);
   }
   return u;
@@ -473,7 +478,7 @@ std::vector<std::string> Output<Dim>::plannedFiles(const std::string& base) cons
     out.push_back(base + "_particles.csv");
   if (exodus_) {
     out.push_back(base + "_grid.exo"), out.push_back(base + "_particles.exo");
-    if (domains_ != Domains::none)
+    if (Dim > 1 && domains_ != Domains::none)
       out.push_back(base + "_domains.exo");
   }
   return out;

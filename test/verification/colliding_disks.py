@@ -1,10 +1,10 @@
 #!/usr/bin/python3
-"""P3: two elastic disks collide with no contact code (PROBLEMS.md P3).
+"""P3: two elastic disks (or, in 3-D, spheres) collide with no contact code (PROBLEMS.md P3).
 
 Runs impm on the deck and asserts, from its outputs:
-  - no interpenetration: at every output step, no particle centre of one disk lies inside
-    the current domain (a parallelogram, from <prefix>_domains.exo) of a particle of the
-    other disk;
+  - no interpenetration: at every output step, no particle centre of one body lies inside
+    the current domain (a parallelogram or parallelepiped, from <prefix>_domains.exo) of a
+    particle of the other body;
   - rebound: each disk's centre-of-mass velocity has reversed (both components) by the end;
   - separation: at the end the closest particle centres of the two disks are further apart
     than a particle spacing;
@@ -43,6 +43,18 @@ def inside(points, quads):
     return result
 
 
+def inside_parallelepipeds(points, cells):
+    """inside[i, j]: point i lies in the parallelepiped j, given by its HEX8 corners (corner 0
+    at -r1 - r2 - r3, corners 1, 3 and 4 one edge away along r1, r2 and r3)."""
+    origin = cells[:, 0, :]
+    edges = np.stack([cells[:, 1, :] - origin, cells[:, 3, :] - origin, cells[:, 4, :] - origin],
+                     axis=2)  # (cell, component, edge)
+    inverse = np.linalg.inv(edges)
+    rel = points[:, None, :] - origin[None, :, :]
+    a = np.einsum("jke,ije->ijk", inverse, rel)  # coordinates along the edges
+    return np.all((a > 0) & (a < 1), axis=2)
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__)
     p.add_argument("--impm", required=True)
@@ -60,25 +72,28 @@ def main():
     domains, dnodal, _ = exodus(prefix + "_domains.exo")
     body = pelem["body"][0].astype(int)
     connect = domains["connect1"][:] - 1
-    X = np.stack([points["coordx"][:], points["coordy"][:]], axis=1)
-    C = np.stack([domains["coordx"][:], domains["coordy"][:]], axis=1)
+    dim = len(domains.dimensions["num_dim"])
+    axes = "xyz"[:dim]
+    test = inside if dim == 2 else inside_parallelepipeds
+    X = np.stack([points["coord" + a][:] for a in axes], axis=1)
+    C = np.stack([domains["coord" + a][:] for a in axes], axis=1)
     worst = 0
     for step in range(len(points["time_whole"][:])):
-        x = X + np.stack([pnodal["displacementX"][step], pnodal["displacementY"][step]], axis=1)
-        corners = C + np.stack([dnodal["displacementX"][step], dnodal["displacementY"][step]], axis=1)
+        x = X + np.stack([pnodal["displacement" + a.upper()][step] for a in axes], axis=1)
+        corners = C + np.stack([dnodal["displacement" + a.upper()][step] for a in axes], axis=1)
         quads = corners[connect]
         # The detector must see each particle's own centre inside its own domain.
-        own = np.diagonal(inside(x, quads))
+        own = np.diagonal(test(x, quads))
         if not own.all():
             failures.append("t = %g: %d particle centres outside their own domains (a wrong "
                             "domain file?)" % (points["time_whole"][step], int((~own).sum())))
         for a, b in ((0, 1), (1, 0)):
-            count = int(inside(x[body == b], quads[body == a]).sum())
+            count = int(test(x[body == b], quads[body == a]).sum())
             worst = max(worst, count)
             if count:
                 failures.append("t = %g: %d particle centres of body %d inside domains of body %d"
                                 % (points["time_whole"][step], count, b, a))
-    print("interpenetration: %d particle centres inside the other disk's domains at worst over %d "
+    print("interpenetration: %d particle centres inside the other body's domains at worst over %d "
           "output steps" % (worst, len(points["time_whole"][:])))
 
     rows = list(csv.DictReader(open(prefix + "_history.csv")))
@@ -90,20 +105,22 @@ def main():
         failures.append("total energy changes by %.3e (allowed %g)" % (change, args.energy_tolerance))
     names = [k[len("v_cm_"):] for k in rows[0] if k.startswith("v_cm_")]
     for n in names:
-        for c in ("v_cm_", "vy_cm_"):
+        for c in ("v_cm_", "vy_cm_", "vz_cm_")[:dim]:
             v0, v1 = float(rows[0][c + n]), float(rows[-1][c + n])
+            if abs(v0) < 1e-12:  # a component the bodies do not move along
+                continue
             print("%s%s: %+.5f -> %+.5f" % (c, n, v0, v1))
             if not v0 * v1 < 0 or abs(v1) < 0.5 * abs(v0):
                 failures.append("%s of %s has not reversed: %g -> %g" % (c, n, v0, v1))
     table = list(csv.DictReader(open(prefix + "_particles.csv")))
-    final = {k: np.array([float(r[k]) for r in table]) for k in ("x", "y", "body", "r1_x")}
-    xa = np.stack([final["x"], final["y"]], axis=1)
+    final = {k: np.array([float(r[k]) for r in table]) for k in tuple(axes) + ("body", "r1_x")}
+    xa = np.stack([final[a] for a in axes], axis=1)
     gap = np.min(np.linalg.norm(xa[final["body"] == 0][:, None, :] - xa[final["body"] == 1][None, :, :],
                                 axis=2))
     spacing = 2 * np.max(np.abs(final["r1_x"]))
-    print("final gap between the disks' particle centres %.4f (particle spacing %.4f)" % (gap, spacing))
+    print("final gap between the bodies' particle centres %.4f (particle spacing %.4f)" % (gap, spacing))
     if gap <= spacing:
-        failures.append("the disks have not separated: gap %.4f <= %.4f" % (gap, spacing))
+        failures.append("the bodies have not separated: gap %.4f <= %.4f" % (gap, spacing))
 
     if args.plot:
         import matplotlib
