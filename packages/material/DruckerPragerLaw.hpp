@@ -87,7 +87,7 @@ struct DruckerPragerLaw {
     const double G = k.mu, K = k.lambda + 2.0 * k.mu / 3.0;
     const double gammaValue = f / (G + K * k.eta * k.etaBar);
     if (rootJ2 - G * gammaValue >= 0.0) {  // the cone
-      const T root = sqrtOf(0.5 * squaredNorm(s));
+      const T root = sqrtOf(T(0.5 * squaredNorm(s)));
       const T dGamma = (root + k.eta * p - k.xi * k.cohesion) / (G + K * k.eta * k.etaBar);
       r.tau = plusIdentity(scaled(s, 1.0 - G * dGamma / root), p - K * k.etaBar * dGamma);
     } else {  // the apex

@@ -97,7 +97,7 @@ void FiniteStrainPlasticity<Dim, Law>::firstPiola(const Evaluation& at, Tensors&
   const Parameters k = parameters_;
   const int count = static_cast<int>(members.extent(0));
   int firstBad = count;
-  using D = Dual<Dim * Dim>;  // derivatives along F_ab, (a, b) -> Dim a + b
+  using D = Fad<Dim * Dim>;  // derivatives along F_ab, (a, b) -> Dim a + b
   Kokkos::parallel_reduce(
       "impm::FiniteStrainPlasticity", RangePolicy<ExecutionSpace>(0, count),
       KOKKOS_LAMBDA(const int i, int& bad) {
@@ -112,7 +112,7 @@ void FiniteStrainPlasticity<Dim, Law>::firstPiola(const Evaluation& at, Tensors&
         D Fd[Dim][Dim], Fd3[3][3], Finv[3][3], Pd[Dim][Dim];
         for (int a = 0; a < Dim; ++a)
           for (int b = 0; b < Dim; ++b)
-            Fd[a][b] = D::variable(f[a][b], Dim * a + b);
+            Fd[a][b] = variable<Dim * Dim>(f[a][b], Dim * a + b);
         embed<Dim>(Fd, Fd3);
         const auto r = Law::returnMap(Fd3, n.at(p), k);
         inverseOf(Fd3, determinantOf(Fd3), Finv);
@@ -120,16 +120,17 @@ void FiniteStrainPlasticity<Dim, Law>::firstPiola(const Evaluation& at, Tensors&
         double Pv[Dim][Dim], Av[Dim][Dim][Dim][Dim];
         for (int a = 0; a < Dim; ++a)
           for (int b = 0; b < Dim; ++b) {
-            Pv[a][b] = Pd[a][b].v;
+            Pv[a][b] = valueOf(Pd[a][b]);
             for (int c = 0; c < Dim; ++c)
               for (int d = 0; d < Dim; ++d)
-                Av[a][b][c][d] = Pd[a][b].d[Dim * c + d];
+                Av[a][b][c][d] = derivativeOf(Pd[a][b], Dim * c + d);
           }
         store<Dim>(P, A, p, Pv, Av);
         const auto& e = r.elasticStrain;
-        trial.store(
-            p, plasticMetricOf(F3, Sym<double>{e.xx.v, e.yy.v, e.zz.v, e.xy.v, e.yz.v, e.xz.v}),
-            r.alpha.v, r.dissipation.v);
+        trial.store(p,
+                    plasticMetricOf(F3, Sym<double>{valueOf(e.xx), valueOf(e.yy), valueOf(e.zz),
+                                                    valueOf(e.xy), valueOf(e.yz), valueOf(e.xz)}),
+                    valueOf(r.alpha), valueOf(r.dissipation));
       },
       Kokkos::Min<int>(firstBad));
   throwIfInverted<Dim>(*this, model(), at, firstBad);

@@ -42,7 +42,7 @@ struct J2Law {
     if (!(qValue - (k.yield + k.hardening * n.alpha) > 0.0))
       return elasticUpdate(t, n);
     PlasticUpdate<T> r;
-    const T q = sqrtOf(1.5 * squaredNorm(s));
+    const T q = sqrtOf(T(1.5 * squaredNorm(s)));
     const T dAlpha = (q - (k.yield + k.hardening * n.alpha)) / (3.0 * k.mu + k.hardening);
     r.tau = plusIdentity(scaled(s, 1.0 - 3.0 * k.mu * dAlpha / q), trace(t.tau) / 3.0);
     r.elasticStrain = difference(t.eps, scaled(s, 1.5 * dAlpha / q));

@@ -2,7 +2,7 @@
 // The kinematics of the finite-strain laws (doc/theory.md, "Hencky elasticity and the
 // exponential map"): the logarithm and the exponential of a symmetric 3 x 3 tensor, with
 // derivatives, the Hencky stress of a logarithmic strain, and the trial and plastic states
-// of the exponential map.  Written on a scalar type T, double or Dual<N>, so that one code
+// of the exponential map.  Written on a scalar type T, double or Fad<N>, so that one code
 // gives the stress and its exact derivative.
 //
 // ln and exp are isotropic tensor functions: f(B) = sum_i f(lambda_i) n_i (x) n_i.  Their
@@ -34,7 +34,7 @@ struct Logarithm {
   }
   template <class T>
   KOKKOS_INLINE_FUNCTION static T difference(const T& lo, const T& twoR) {
-    return log1pOf(twoR / lo);
+    return log1pOf(T(twoR / lo));
   }
   // f', f'', f''' at m
   template <class T>
@@ -99,8 +99,8 @@ KOKKOS_INLINE_FUNCTION Sym<T> planeFunction(const Sym<T>& B) {
   } else {
     const T r = sqrtOf(s);
     // The smaller eigenvalue; from the determinant when m > 0, where m - r would cancel.
-    const T lo = valueOf(m) > 0.0 ? (B.xx * B.yy - B.xy * B.xy) / (m + r) : m - r;
-    const T diff = Fn::difference(lo, 2.0 * r);
+    const T lo = valueOf(m) > 0.0 ? T((B.xx * B.yy - B.xy * B.xy) / (m + r)) : T(m - r);
+    const T diff = Fn::difference(lo, T(2.0 * r));
     g0 = Fn::f(lo) + 0.5 * diff;
     g1 = diff / (2.0 * r);
   }

@@ -1,6 +1,6 @@
 #pragma once
 // Symmetric 3 x 3 tensors as the finite-strain laws use them (strains, Kirchhoff stresses,
-// the plastic metric), on a scalar type T: double, or dual numbers for exact derivatives.
+// the plastic metric), on a scalar type T: double, or Fad for exact derivatives.
 // Six components in the order of the symmetric3x3 fields (xx, yy, zz, xy, yz, xz).  A 2-D
 // law is the 3-D law at F_zz = 1: its tensors have yz = xz = 0, which the isotropic
 // functions (material/LogStrain) recognise and treat on the in-plane block.
@@ -8,7 +8,9 @@
 // The deformation gradient of a Dim-D law is a Dim x Dim array; embed<Dim> gives the 3 x 3
 // F with F_zz = 1 (2-D), and the kinematics below act on that.
 
-#include "core/Dual.hpp"
+#include <type_traits>
+
+#include "core/ForwardAD.hpp"
 
 namespace impm {
 
@@ -85,16 +87,20 @@ KOKKOS_INLINE_FUNCTION void embed(const T F[Dim][Dim], T F3[3][3]) {
       F3[a][b] = (a < Dim && b < Dim) ? F[a][b] : T(a == b ? 1.0 : 0.0);
 }
 
+// The scalar type of a product of S and T, one of them double (not decltype(S() * T()):
+// with expression templates, such as Sacado's, that is an expression, not a number).
+template <class S, class T>
+using ProductType = std::conditional_t<std::is_same_v<S, double>, T, S>;
+
 // F A F^T for a 3 x 3 F.
 template <class T, class S>
-KOKKOS_INLINE_FUNCTION auto congruence(const S F[3][3], const Sym<T>& a)
-    -> Sym<decltype(S() * T())> {
-  using R = decltype(S() * T());
+KOKKOS_INLINE_FUNCTION Sym<ProductType<S, T>> congruence(const S F[3][3], const Sym<T>& a) {
+  using R = ProductType<S, T>;
   R FA[3][3];  // F A
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
       FA[i][j] = F[i][0] * entry(a, 0, j) + F[i][1] * entry(a, 1, j) + F[i][2] * entry(a, 2, j);
-  const auto row = [&](int i, int j) {
+  const auto row = [&](int i, int j) -> R {  // R, not an expression of the lambda's temporaries
     return FA[i][0] * F[j][0] + FA[i][1] * F[j][1] + FA[i][2] * F[j][2];
   };
   return {row(0, 0), row(1, 1), row(2, 2), row(0, 1), row(1, 2), row(0, 2)};

@@ -344,21 +344,21 @@ TEST_P(EveryPlaneStrainLaw, TangentAndEnergyAreConsistentWithTheStress) {
 template <int Dim>
 void henckyByDuals(const double F[Dim][Dim], const Lame& k, double P[Dim][Dim],
                    double A[Dim][Dim][Dim][Dim]) {
-  using D = Dual<Dim * Dim>;
+  using D = Fad<Dim * Dim>;
   D Fd[Dim][Dim], F3[3][3], Finv[3][3], Pd[Dim][Dim];
   for (int a = 0; a < Dim; ++a)
     for (int b = 0; b < Dim; ++b)
-      Fd[a][b] = D::variable(F[a][b], Dim * a + b);
+      Fd[a][b] = variable<Dim * Dim>(F[a][b], Dim * a + b);
   embed<Dim>(Fd, F3);
   inverseOf(F3, determinantOf(F3), Finv);
   const auto eps = scaled(isotropicFunction<Logarithm>(congruence(F3, identityOf<double>())), 0.5);
   piolaOfKirchhoff<Dim>(henckyStress(eps, k.mu, k.lambda), Finv, Pd);
   for (int a = 0; a < Dim; ++a)
     for (int b = 0; b < Dim; ++b) {
-      P[a][b] = Pd[a][b].v;
+      P[a][b] = valueOf(Pd[a][b]);
       for (int c = 0; c < Dim; ++c)
         for (int d = 0; d < Dim; ++d)
-          A[a][b][c][d] = Pd[a][b].d[Dim * c + d];
+          A[a][b][c][d] = derivativeOf(Pd[a][b], Dim * c + d);
     }
 }
 
