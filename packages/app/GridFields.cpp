@@ -1,18 +1,19 @@
 #include "app/GridFields.hpp"
 
+#include "core/Axes.hpp"
+
 namespace impm {
 
 namespace {
 
 std::vector<std::string> fieldNames(bool displacement, bool dynamic, int dim) {
   std::vector<std::string> names;
-  const char* axes[] = {"X", "Y", "Z"};
   if (displacement)
     for (int d = 0; d < dim; ++d)
-      names.push_back(std::string("displacement") + axes[d]);
+      names.push_back(std::string("displacement") + referenceAxisName(d));
   if (dynamic) {
     for (int d = 0; d < dim; ++d)
-      names.push_back(std::string("velocity") + axes[d]);
+      names.push_back(std::string("velocity") + referenceAxisName(d));
     names.push_back("mass");
   }
   return names;
@@ -42,10 +43,10 @@ const std::vector<LO>& GridFields<Dim>::outputSlots(const Teuchos::RCP<const Map
     const GO dof = dofs->getGlobalElement(static_cast<LO>(k));
     if (dofMap.isExtraDof(dof))
       continue;
-    const LO node = nodes.getLocalElement(dof / Dim);
+    const LO node = nodes.getLocalElement(DofMap<Dim>::nodeOf(dof));
     if (node == Teuchos::OrdinalTraits<LO>::invalid())
       throw std::logic_error("grid output: an unknown's node is not on its rank");
-    slots_[k] = node * Dim + static_cast<LO>(dof % Dim);
+    slots_[k] = node * Dim + DofMap<Dim>::componentOf(dof);
   }
   slotsDofs_ = dofs, slotsNodes_ = values_.getMap();
   return slots_;

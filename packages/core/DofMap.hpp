@@ -57,6 +57,10 @@ class DofMap {
   const Teuchos::RCP<const Map>& overlapMap() const { return overlap_; }
 
   GO nodeDof(GlobalId node, int component) const { return node * Dim + component; }
+  // The inverse of nodeDof: the node and the component of a nodal DOF (and of a padding
+  // DOF, numbered as the components of a node of its own).
+  static constexpr GlobalId nodeOf(GO dof) { return dof / Dim; }
+  static constexpr int componentOf(GO dof) { return static_cast<int>(dof % Dim); }
   GO extraDof(int k) const { return numNodes_ * Dim + k; }
   // Extra unknowns and the padding unknowns: not displacement components of a node.
   bool isExtraDof(GO dof) const { return dof >= numNodes_ * Dim; }

@@ -1,12 +1,11 @@
 #include <cctype>
 
+#include "core/Axes.hpp"
 #include "core/ParticleSet.hpp"
 
 namespace impm {
 
 namespace {
-
-const char* const kAxes = "xyz";
 
 FieldSpec field(const std::string& name, FieldShape shape, const std::string& doc) {
   FieldSpec s;
@@ -32,13 +31,12 @@ std::vector<OutputColumn> defaultColumns(const std::string& name, FieldShape sha
       break;
     case FieldShape::vector:
       for (int d = 0; d < Dim; ++d)
-        out.push_back({d, Dim == 1 ? name : name + "_" + kAxes[d],
-                       name + static_cast<char>(std::toupper(kAxes[d]))});
+        out.push_back({d, Dim == 1 ? name : name + "_" + axisName(d), name + referenceAxisName(d)});
       break;
     case FieldShape::tensor:
       for (int a = 0; a < Dim; ++a)
         for (int b = 0; b < Dim; ++b) {
-          const std::string n = Dim == 1 ? name : name + "_" + kAxes[a] + kAxes[b];
+          const std::string n = Dim == 1 ? name : name + "_" + axisName(a) + axisName(b);
           out.push_back({a * Dim + b, n, n});
         }
       break;
@@ -51,7 +49,7 @@ std::vector<OutputColumn> defaultColumns(const std::string& name, FieldShape sha
     case FieldShape::corners:
       for (int c = 0; c < (1 << Dim); ++c)
         for (int d = 0; d < Dim; ++d) {
-          const std::string n = name + std::to_string(c + 1) + "_" + kAxes[d];
+          const std::string n = name + std::to_string(c + 1) + "_" + axisName(d);
           out.push_back({c * Dim + d, n, n});
         }
       break;
@@ -88,12 +86,12 @@ BuiltinFields<Dim>::BuiltinFields() {
   X.columns = csvOnly(defaultColumns<Dim>("X", vector));
   if (Dim > 1)  // X, Y, Z
     for (int d = 0; d < Dim; ++d)
-      X.columns[d].csv = std::string(1, static_cast<char>(std::toupper(kAxes[d])));
+      X.columns[d].csv = referenceAxisName(d);
   x = field("x", vector, "current position");
   x.columns = csvOnly(defaultColumns<Dim>("x", vector));
   if (Dim > 1)  // x, y, z
     for (int d = 0; d < Dim; ++d)
-      x.columns[d].csv = std::string(1, kAxes[d]);
+      x.columns[d].csv = axisName(d);
   u = field("u", vector, "displacement");
   u.columns = csvOnly(defaultColumns<Dim>("u", vector));
   strain = field("strain", scalar, "1-D: engineering strain F - 1");
@@ -121,11 +119,11 @@ BuiltinFields<Dim>::BuiltinFields() {
   v = field("v", vector, "velocity");
   v.columns = defaultColumns<Dim>("v", vector);
   for (int d = 0; d < Dim; ++d)
-    v.columns[d].exodus = std::string("velocity") + static_cast<char>(std::toupper(kAxes[d]));
+    v.columns[d].exodus = std::string("velocity") + referenceAxisName(d);
   a = field("a", vector, "acceleration");
   a.columns = defaultColumns<Dim>("a", vector);
   for (int d = 0; d < Dim; ++d)
-    a.columns[d].exodus = std::string("acceleration") + static_cast<char>(std::toupper(kAxes[d]));
+    a.columns[d].exodus = std::string("acceleration") + referenceAxisName(d);
   F = field("F", tensor, "2-D and 3-D: deformation gradient");
   if (Dim > 1)
     F.columns = defaultColumns<Dim>("F", tensor);
@@ -142,7 +140,7 @@ BuiltinFields<Dim>::BuiltinFields() {
   if (Dim > 1)
     for (int k = 0; k < Dim; ++k)
       for (int c = 0; c < Dim; ++c) {
-        const std::string axis(1, kAxes[c]);
+        const std::string axis = axisName(c);
         domain.columns.push_back({c * Dim + k, "r" + std::to_string(k + 1) + "_" + axis, ""});
         domain0.columns.push_back({c * Dim + k, "r0" + std::to_string(k + 1) + "_" + axis, ""});
       }

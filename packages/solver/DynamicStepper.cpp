@@ -140,14 +140,14 @@ void DynamicStepper<Dim>::startFixedGrid(GridSystem<Dim>& system) {
     if (system.dofs().isExtraDof(gid))
       continue;
     int idx[Dim];
-    grid.nodeIndex(gid / Dim, idx);
+    grid.nodeIndex(DofMap<Dim>::nodeOf(gid), idx);
     double x[Dim], u[Dim] = {}, v[Dim] = {};
     for (int d = 0; d < Dim; ++d)
       x[d] = grid.nodeCoord(d, idx[d]);
     if (this->setup_.initialNodalState)
       this->setup_.initialNodalState(x, u, v);
-    u_->replaceLocalValue(static_cast<LO>(k), u[gid % Dim]);
-    v_->replaceLocalValue(static_cast<LO>(k), v[gid % Dim]);
+    u_->replaceLocalValue(static_cast<LO>(k), u[DofMap<Dim>::componentOf(gid)]);
+    v_->replaceLocalValue(static_cast<LO>(k), v[DofMap<Dim>::componentOf(gid)]);
   }
   // The integration points take the initial displacement (F = I + grad u0) and velocity.
   auto& particles = this->setup_.particles;

@@ -5,6 +5,7 @@
 #include "assembly/Energy.hpp"
 #include "assembly/Forces.hpp"
 #include "basis/CornerWeights.hpp"
+#include "core/Axes.hpp"
 #include "core/Collective.hpp"
 #include "core/Diagnostics.hpp"
 #include "core/Errors.hpp"
@@ -365,7 +366,8 @@ std::string GridSystem<Dim>::unknownLabel(GO dof) const {
     return "extra unknown " + std::to_string(dof) + " (a boundary force)";
   if (Dim == 1)
     return nodeLabel(grid_, dof);
-  return nodeLabel(grid_, dof / Dim) + ", component " + "xyz"[dof % Dim];
+  return nodeLabel(grid_, DofMap<Dim>::nodeOf(dof)) + ", component " +
+         axisName(DofMap<Dim>::componentOf(dof));
 }
 
 template <int Dim>

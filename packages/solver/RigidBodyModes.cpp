@@ -19,14 +19,14 @@ Teuchos::RCP<MultiVector> rigidBodyModes(const GridGeometry<Dim>& grid, const Do
   for (LO k = 0; k < static_cast<LO>(map.getNodeNumElements()); ++k) {
     const GO gid = map.getGlobalElement(k);
     if (std::find(padding.begin(), padding.end(), gid) != padding.end()) {
-      v(k, gid % Dim) = 1.0;
+      v(k, DofMap<Dim>::componentOf(gid)) = 1.0;
       continue;
     }
     if (gid >= nodal)  // an extra unknown
       continue;
-    const int component = static_cast<int>(gid % Dim);
+    const int component = DofMap<Dim>::componentOf(gid);
     int idx[Dim];
-    grid.nodeIndex(gid / Dim, idx);
+    grid.nodeIndex(DofMap<Dim>::nodeOf(gid), idx);
     double x[Dim];
     for (int d = 0; d < Dim; ++d)
       x[d] = grid.nodeCoord(d, idx[d]) - centre[d];

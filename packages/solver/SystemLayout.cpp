@@ -136,7 +136,7 @@ std::vector<LO> rowsNotIntegrated(const GridGeometry<Dim>& grid, const SystemLay
       const GO dof = map.getGlobalElement(static_cast<LO>(k));
       if (values[k] > 0.0 || dofs.isExtraDof(dof))
         continue;
-      const GlobalId node = dof / Dim;
+      const GlobalId node = DofMap<Dim>::nodeOf(dof);
       if (std::binary_search(kept.begin(), kept.end(), node) &&
           !std::binary_search(contributionNodes.begin(), contributionNodes.end(), node)) {
         retired.push_back(static_cast<LO>(k));
