@@ -442,7 +442,7 @@ void Simulation<Dim>::warnOfDistortedDomains(int step) {
     std::cout << "impm: warning: step " << step << ": the domain of particle " << d.particle
               << " has lost its shape: |D| |D^-1| / Dim = " << std::setprecision(3) << d.worst
               << " (D maps its initial domain onto the current one; 1: the initial shape, "
-              << kDistortionWarning << ": in 2-D about ten times longer than wide; smallest det D "
+              << kDistortionWarning << ": about ten times longer than wide; smallest det D "
               << d.smallestJ
               << "); such domains reach far through cells whose nodes they barely cover, and "
                  "the results there lose accuracy (doc/theory.md).  Warned once\n"

@@ -15,8 +15,8 @@
 
 namespace impm {
 
-// delta above which the run warns: in 2-D a domain about ten times longer than it is wide,
-// relative to its initial shape.
+// delta above which the run warns: a domain about ten times longer than it is wide, relative
+// to its initial shape (2-D and 3-D alike).
 inline constexpr double kDistortionWarning = 5.0;
 
 struct DomainDistortion {
