@@ -24,24 +24,33 @@ KOKKOS_INLINE_FUNCTION bool centreOnGrid(const GridGeometry<Dim>& grid, const Ve
   return true;
 }
 
-// The nodes a domain with corners g (grid units, clipped) touches: those of the cells that
-// hold its corners (eq. 1.40).
+// The nodes a domain with corners g (grid units, clipped) touches: those whose tents are
+// non-zero at some corner (eq. 1.40), nodes floor(g) to ceil(g) of each corner along each
+// axis.  A corner within kOnNode of a node (a domain's side on a grid line, up to round-off)
+// touches that node only: the next node's weights there are below 1e-14, which the map
+// leaves out anyway, and counting it would make the map reserve up to 3^Dim nodes for 2^Dim
+// (then copy them together; in 3-D half the memory of a step's map).
 template <int Dim, int Corners>
 KOKKOS_INLINE_FUNCTION void cornerNodeBox(const GridGeometry<Dim>& grid,
                                           const double g[Corners][Dim], int lo[Dim], int hi[Dim]) {
+  constexpr double kOnNode = 1e-14;
   for (int d = 0; d < Dim; ++d) {
     lo[d] = grid.cells[d];
     hi[d] = 0;
   }
   for (int c = 0; c < Corners; ++c)
     for (int d = 0; d < Dim; ++d) {
-      int cell = static_cast<int>(Kokkos::Experimental::floor(g[c][d]));
-      cell = cell < 0 ? 0 : (cell >= grid.cells[d] ? grid.cells[d] - 1 : cell);
-      if (cell < lo[d])
-        lo[d] = cell;
-      if (cell + 1 > hi[d])
-        hi[d] = cell + 1;
+      const int first = static_cast<int>(Kokkos::Experimental::floor(g[c][d] + kOnNode));
+      const int last = static_cast<int>(Kokkos::Experimental::ceil(g[c][d] - kOnNode));
+      if (first < lo[d])
+        lo[d] = first;
+      if (last > hi[d])
+        hi[d] = last;
     }
+  for (int d = 0; d < Dim; ++d) {
+    lo[d] = lo[d] < 0 ? 0 : (lo[d] > grid.cells[d] ? grid.cells[d] : lo[d]);
+    hi[d] = hi[d] > grid.cells[d] ? grid.cells[d] : (hi[d] < lo[d] ? lo[d] : hi[d]);
+  }
 }
 
 template <int Dim, class Space = DefaultExecSpace>
