@@ -83,8 +83,8 @@ Formula readFormula(const Teuchos::ParameterList& p, const std::string& name,
   }
 }
 
-// Vector formula: "Name" in 1-D, "Name x", "Name y" (, "Name z") in 2-D (3-D); the forms of the
-// other dimensions must be unset.
+// Vector formula: "Name" in 1-D, "Name x", "Name y" (, "Name z") in 2-D (3-D); a deck that
+// gives a form of another dimension (even as "0") is told which forms its grid takes.
 template <int Dim>
 std::array<Formula, Dim> readVector(const Teuchos::ParameterList& p, const std::string& name,
                                     const std::string& path) {
@@ -97,7 +97,7 @@ std::array<Formula, Dim> readVector(const Teuchos::ParameterList& p, const std::
   const std::string own =
       Dim == 1 ? "'" + name + "'" : "'" + name + " x' to '" + name + " " + axisName(Dim - 1) + "'";
   for (const auto& other : unused)
-    if (formulaText(p, other) != "0")
+    if (setInDeck(p, other))
       throw InputError(path + "/" + other, "is not for this deck's " + std::to_string(Dim) +
                                                "-D grid (use " + own + ")");
   for (int d = 0; d < Dim; ++d)
@@ -161,7 +161,7 @@ Bodies<Dim>::Bodies(const Teuchos::ParameterList& deck,
       b.load = readFormula(p, "Distributed Load", kVariables1D, path);
     } else {
       for (const char* one : {"Section", "Distributed Load"})
-        if (formulaText(p, one) != (std::string(one) == "Section" ? "1" : "0"))
+        if (setInDeck(p, one))
           throw InputError(path + "/" + one, Dim == 2
                                                  ? "is for 1-D bars; 2-D bodies are plane strain "
                                                    "with unit thickness (use Body Force x, y)"

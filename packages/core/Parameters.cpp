@@ -482,9 +482,17 @@ void validateParameters(ParameterList& user, const ParameterList& valid, const s
     } else if (isRequired(validEntry)) {
       throw InputError(childPath(path, name), "required parameter is missing");
     } else {
-      user.setEntry(name, validEntry);
+      // Marked as a default, so that setInDeck tells it from a value the deck gave.
+      ParameterEntry filled = validEntry;
+      filled.setAnyValue(validEntry.getAny(false), true);
+      user.setEntry(name, filled);
     }
   }
+}
+
+bool setInDeck(const ParameterList& list, const std::string& name) {
+  const ParameterEntry* entry = list.getEntryPtr(name);
+  return entry && !entry->isDefault();
 }
 
 bool findValidEntry(const ParameterList& valid, const ParameterList& user, const std::string& path,

@@ -98,6 +98,9 @@ std::string formulaText(const Teuchos::ParameterList& list, const std::string& n
 void validateParameters(Teuchos::ParameterList& user, const Teuchos::ParameterList& valid,
                         const std::string& path = "");
 
+// Whether the deck gave list's parameter `name` (false for a default validateParameters filled).
+bool setInDeck(const Teuchos::ParameterList& list, const std::string& name);
+
 // The valid entry that a user path refers to, resolving "<name>" and "[Key=value]" against
 // the user's values; false when the path names no parameter.
 bool findValidEntry(const Teuchos::ParameterList& valid, const Teuchos::ParameterList& user,

@@ -205,6 +205,12 @@ Teuchos::ParameterList NewtonSolver::validParameters() {
                 "times the iterations of the first solve after the last build (at least 5; per "
                 "decade of residual reduction when their tolerances differ)",
                 Bounds::atLeast(1.0));
+  declareChoice(valid, "Near Null Space", "rigid-body modes", {"rigid-body modes", "translations"},
+                "The vectors MueLu's smoothed aggregation must reproduce on its coarse levels, "
+                "with Preconditioner Reuse on: the grid's rigid-body modes from the nodal "
+                "coordinates (1 in 1-D, 3 in 2-D, 6 in 3-D) or only the translations (MueLu's "
+                "own default: one constant vector per unknown of a node; without reuse MueLu "
+                "always takes these)");
   declareBool(valid, "Graph Reuse", true,
               "Keep a step's unknowns, graph and importer for the next steps while the "
               "(particle, node) pairs, the boundary conditions' nodes and the ownership of the "
@@ -233,6 +239,7 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList& params,
       linearTolerance_(params.get<double>("Linear Tolerance")),
       roundOffFactor_(params.get<double>("Round-off Factor")),
       adaptiveLinearTolerance_(params.get<bool>("Adaptive Linear Tolerance")),
+      rigidBodyModes_(params.get<std::string>("Near Null Space") == "rigid-body modes"),
       maxIterations_(params.get<int>("Maximum Iterations")) {
   // The deck's lists are merged over impm's; a value where impm has a sublist (or the
   // reverse) is the deck's mistake.
@@ -300,7 +307,8 @@ NewtonReport NewtonSolver::solve(const Teuchos::RCP<ResidualModel>& model, Vecto
     }
   } lease{reuse_.get()};
   if (lease.reuse) {
-    lease.reuse->setNullSpace([model] { return model->nearNullSpace(); });
+    if (rigidBodyModes_)
+      lease.reuse->setNullSpace([model] { return model->nearNullSpace(); });
     lease.reuse->startSolve();
   }
   auto group = Teuchos::rcp(new NOX::Thyra::Group(NOX::Thyra::Vector(guess), me, me->create_W_op(),

@@ -93,6 +93,7 @@ class NewtonSolver {
   double relativeTolerance_, absoluteTolerance_, updateTolerance_, linearTolerance_,
       roundOffFactor_;
   bool adaptiveLinearTolerance_;
+  bool rigidBodyModes_;  // hand MueLu the model's near-null space (else MueLu's own)
   int maxIterations_;
   std::ostream* log_ = nullptr;
   std::string indent_;

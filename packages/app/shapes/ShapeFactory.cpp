@@ -6,6 +6,7 @@
 #include "app/shapes/Ball.hpp"
 #include "app/shapes/Box.hpp"
 #include "app/shapes/Cylinder.hpp"
+#include "app/shapes/Extrusion.hpp"
 #include "app/shapes/Image.hpp"
 #include "app/shapes/Interval.hpp"
 #include "app/shapes/Mesh.hpp"
@@ -61,6 +62,17 @@ const std::vector<Entry>& registry() {
   return shapes;
 }
 
+// The 2-D shape extruded along z over the deck's Extrusion.
+std::shared_ptr<const Shape<3>> extrusion(std::shared_ptr<const Shape<2>> base,
+                                          const Teuchos::ParameterList& params,
+                                          const std::string& path) {
+  const auto& z = params.get<Teuchos::Array<double>>("Extrusion");
+  if (!(z[0] < z[1]))
+    throw InputError(path + "/Extrusion", "expected z0 < z1, got {" + std::to_string(z[0]) + ", " +
+                                              std::to_string(z[1]) + "}");
+  return std::make_shared<const Extrusion>(std::move(base), z[0], z[1]);
+}
+
 }  // namespace
 
 void declareShapeParameters(Teuchos::ParameterList& valid) {
@@ -69,7 +81,11 @@ void declareShapeParameters(Teuchos::ParameterList& valid) {
     names.push_back(e.name);
   declareChoice(valid, "Shape", "interval", names,
                 "Geometry of the body in the reference configuration: interval (1-D); "
-                "rectangle, disk, polygon, image or mesh (2-D); box, sphere or cylinder (3-D)");
+                "rectangle, disk, polygon, image or mesh (2-D; in a 3-D deck extruded along z, "
+                "see Extrusion); box, sphere or cylinder (3-D)");
+  declareDoubleArray(valid, "Extrusion", {0.0, 1.0}, {2},
+                     "3-D decks with a 2-D shape: {z0, z1}, the shape extruded along z from z0 to "
+                     "z1 (filled on sub-cells like the 3-D shapes)");
   for (const auto& e : registry())
     e.declare(valid.sublist("[Shape=" + e.name + "]"));
 }
@@ -81,9 +97,21 @@ std::shared_ptr<const Shape<Dim>> createShape(const Teuchos::ParameterList& para
   for (const auto& e : registry()) {
     if (e.name != name)
       continue;
+    const bool extruded = setInDeck(params, "Extrusion");
+    if (extruded && (Dim != 3 || e.dimension != 2))
+      throw InputError(path + "/Extrusion", "extrudes a 2-D shape in a 3-D deck; shape '" + name +
+                                                "' is " + std::to_string(e.dimension) +
+                                                "-D and the grid " + std::to_string(Dim) + "-D");
+    if constexpr (Dim == 3)
+      if (extruded)
+        return extrusion(e.create2(params, path), params, path);
     if (e.dimension != Dim)
-      throw InputError(path + "/Shape", "shape '" + name + "' is " + std::to_string(e.dimension) +
-                                            "-D but the grid is " + std::to_string(Dim) + "-D");
+      throw InputError(
+          path + "/Shape",
+          "shape '" + name + "' is " + std::to_string(e.dimension) + "-D but the grid is " +
+              std::to_string(Dim) + "-D" +
+              (Dim == 3 && e.dimension == 2 ? " (give Extrusion = {z0, z1} to extrude it along z)"
+                                            : ""));
     if constexpr (Dim == 1)
       return e.create1(params, path);
     else if constexpr (Dim == 2)
