@@ -211,8 +211,8 @@ Teuchos::ParameterList mergedLinearSolverParameters(const Teuchos::ParameterList
   else if (!wantsDirect && defaultDirect)
     p = iterativeLinearSolverParameters(kind, dim, ranks);
   // A deck that chooses MueLu where the default is another preconditioner (2-D grids under
-  // 4000 nodes, mass-dominated steps) starts from impm's multigrid settings for the problem
-  // (Dim unknowns per node, the smoother, the coarse solve), not from MueLu's own defaults
+  // 4000 nodes (3-D: 300), mass-dominated steps) starts from impm's multigrid settings for the
+  // problem (Dim unknowns per node, the smoother, the coarse solve), not from MueLu's own defaults
   // (one unknown per node: 50-63 Krylov iterations per load step on columns 16-20 cells
   // wide, against 16-18 with these settings).
   if (chosenPreconditioner(deck) == "MueLu" && p.get<std::string>("Preconditioner Type") != "MueLu")

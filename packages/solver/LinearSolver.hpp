@@ -6,11 +6,12 @@
 // the kind of operator the run solves (doc/performance.md records what was measured to
 // choose them):
 //   - 1-D systems (with their Robin rows): GMRES + the banded LU (exact on one rank);
-//   - small 2-D grids (fewer than 4000 nodes) and stiffness-dominated operators whose tangent
-//     may be non-symmetric (plasticity): MUMPS's LU.  Near a limit load the plastic tangent
-//     is nearly singular: ILUT-preconditioned GMRES took 30-90 iterations a solve there, and
-//     the strip footing's 10^4 particles ran 1508 s against 14 s;
-//   - stiffness-dominated operators in 2-D whose tangent is symmetric (hyperelastic laws, the
+//   - small grids (fewer than 4000 nodes in 2-D, 300 in 3-D) and stiffness-dominated
+//     operators whose tangent may be non-symmetric (plasticity): MUMPS's LU.  Near a limit load the
+//     plastic tangent is nearly singular: ILUT-preconditioned GMRES took 30-90 iterations a solve
+//     there, and the strip footing's 10^4 particles ran 1508 s against 14 s;
+//   - stiffness-dominated operators in 2-D and 3-D whose tangent is symmetric (hyperelastic laws,
+//   the
 //     prescribed unknowns eliminated symmetrically: static steps, Newmark with time steps
 //     beyond twice the wave transit time of a cell): CG + MueLu smoothed aggregation, Dim
 //     unknowns per node, the rigid-body modes as near-null space, symmetric Gauss-Seidel

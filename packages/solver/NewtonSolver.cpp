@@ -199,7 +199,7 @@ Teuchos::ParameterList NewtonSolver::validParameters() {
                 "those right after it was built; once a step's first solve on the last step's "
                 "preconditioner grows past that, later steps start with a new one until the next "
                 "checkpoint (off: a new one for every linear solve; auto: on with the multigrid "
-                "default of 2-D stiffness-dominated steps)");
+                "default of 2-D and 3-D stiffness-dominated steps)");
   declareDouble(valid, "Rebuild Factor", 2.0,
                 "With Preconditioner Reuse: rebuild when a linear solve takes more than this "
                 "times the iterations of the first solve after the last build (at least 5; per "
@@ -219,9 +219,9 @@ Teuchos::ParameterList NewtonSolver::validParameters() {
               "Print every Newton iteration's residual norm and linear iteration count");
   declareOpaque(valid, "Linear Solver",
                 "A Stratimikos parameter list, merged over impm's default for the problem (1-D: "
-                "GMRES + the banded LU; 2-D grids under 4000 nodes and 2-D stiffness-dominated "
+                "GMRES + the banded LU; grids under 4000 nodes (3-D: 300) and stiffness-dominated "
                 "steps with a non-symmetric tangent (plasticity): the MUMPS direct solver; "
-                "symmetric ones: CG + MueLu smoothed aggregation; 2-D mass-dominated steps: CG + "
+                "symmetric ones: CG + MueLu smoothed aggregation; mass-dominated steps: CG + "
                 "Jacobi; see the user guide); MUMPS (Linear Solver Type), Ifpack2 and MueLu are "
                 "registered.  Checked by Stratimikos, Belos, Ifpack2 and MueLu at start-up.");
   declareOpaque(valid, "NOX",

@@ -22,8 +22,11 @@ using Matrix = std::array<double, 4>;  // (a, b) at 2a + b
 constexpr double kE = 1000.0, kNu = 0.3, kYield = 10.0, kH = 50.0;
 const double kMu = kE / (2 * (1 + kNu)), kLambda = kE * kNu / ((1 + kNu) * (1 - 2 * kNu));
 
-std::shared_ptr<Material<2>> planeStrainLaw(const std::string& model, double yield = kYield,
-                                            double H = kH) {
+// A law of the tests' elastic constants: j2 with yield stress and hardening modulus,
+// drucker-prager with c = 1, phi = 30, psi = 10 degrees, any other model as it is.
+template <int Dim>
+std::shared_ptr<Material<Dim>> plasticLaw(const std::string& model, double yield = kYield,
+                                          double H = kH) {
   Teuchos::ParameterList p;
   p.set("Model", model);
   p.set("E", kE);
@@ -31,9 +34,18 @@ std::shared_ptr<Material<2>> planeStrainLaw(const std::string& model, double yie
   if (model == "j2") {
     p.set("Yield Stress", yield);
     p.set("Hardening Modulus", H);
+  } else if (model == "drucker-prager") {
+    p.set("Cohesion", 1.0);
+    p.set("Friction Angle", 30.0);
+    p.set("Dilation Angle", 10.0);
   }
   validateParameters(p, materialValidParameters());
-  return createMaterial<2>("m", p);
+  return createMaterial<Dim>("m", p);
+}
+
+std::shared_ptr<Material<2>> planeStrainLaw(const std::string& model, double yield = kYield,
+                                            double H = kH) {
+  return plasticLaw<2>(model, yield, H);
 }
 
 // A material point of any dimension (several copies, to evaluate perturbed F in one call)
@@ -492,24 +504,6 @@ TEST(J2Law1D, LoadingPastYieldAndUnloadingFollowTheExactBilinearLaw) {
 
 namespace impm {
 namespace {
-
-template <int Dim>
-std::shared_ptr<Material<Dim>> plasticLaw(const std::string& model) {
-  Teuchos::ParameterList p;
-  p.set("Model", model);
-  p.set("E", kE);
-  p.set("nu", kNu);
-  if (model == "j2") {
-    p.set("Yield Stress", kYield);
-    p.set("Hardening Modulus", kH);
-  } else {
-    p.set("Cohesion", 1.0);
-    p.set("Friction Angle", 30.0);
-    p.set("Dilation Angle", 10.0);
-  }
-  validateParameters(p, materialValidParameters());
-  return createMaterial<Dim>("m", p);
-}
 
 // Largest |A - dP/dF (central differences, h = 1e-6)| relative to max |A|, 3-D.
 double tangentError3D(PointIn<3>& point, const std::vector<double>& F) {
