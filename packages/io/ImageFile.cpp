@@ -98,13 +98,25 @@ void tiffError(const char* module, const char* format, va_list args) {
 
 void tiffWarning(const char*, const char*, va_list) {}
 
-GrayImage readTiff(const std::string& path) {
+using TiffFile = std::unique_ptr<TIFF, void (*)(TIFF*)>;
+
+// The TIFF at path, libtiff's messages kept for the errors; FileError when it cannot be read.
+TiffFile openTiff(const std::string& path) {
   TIFFSetErrorHandler(tiffError);
   TIFFSetWarningHandler(tiffWarning);
   tiffMessage().clear();
-  std::unique_ptr<TIFF, void (*)(TIFF*)> tiff(TIFFOpen(path.c_str(), "r"), &TIFFClose);
+  TiffFile tiff(TIFFOpen(path.c_str(), "r"), &TIFFClose);
   if (!tiff)
     throw FileError(path, "is not a readable TIFF: " + tiffMessage());
+  return tiff;
+}
+
+GrayImage readTiff(const std::string& path, int page) {
+  const TiffFile tiff = openTiff(path);
+  if (page > 0 && !TIFFSetDirectory(tiff.get(), static_cast<tdir_t>(page)))
+    throw FileError(path, "has no page " + std::to_string(page) + " (it has " +
+                              std::to_string(TIFFNumberOfDirectories(tiff.get())) +
+                              ", counted from 0)");
   uint32_t width = 0, height = 0;
   uint16_t bits = 1, samples = 1, photometric = PHOTOMETRIC_MINISBLACK;
   TIFFGetField(tiff.get(), TIFFTAG_IMAGEWIDTH, &width);
@@ -149,7 +161,12 @@ GrayImage readTiff(const std::string& path) {
 
 }  // namespace
 
-GrayImage readGrayImage(const std::string& path) {
+namespace {
+
+enum class ImageKind { png, tiff };
+
+// The kind of image file by its signature; FileError when it is none.
+ImageKind imageKind(const std::string& path) {
   if (const std::string why = notAnInputFile(path, "the image file does not exist"); !why.empty())
     throw FileError(path, why);
   std::ifstream in(path, std::ios::binary);
@@ -159,10 +176,27 @@ GrayImage readGrayImage(const std::string& path) {
   in.read(reinterpret_cast<char*>(signature), sizeof signature);
   in.close();
   if (png_sig_cmp(signature, 0, 8) == 0)
-    return readPng(path);
+    return ImageKind::png;
   if ((signature[0] == 'I' && signature[1] == 'I') || (signature[0] == 'M' && signature[1] == 'M'))
-    return readTiff(path);
+    return ImageKind::tiff;
   throw FileError(path, "is neither a PNG nor a TIFF image");
+}
+
+}  // namespace
+
+GrayImage readGrayImage(const std::string& path, int page) {
+  if (imageKind(path) == ImageKind::tiff)
+    return readTiff(path, page);
+  if (page > 0)
+    throw FileError(
+        path, "is a PNG, which has one page (page " + std::to_string(page) + " was asked for)");
+  return readPng(path);
+}
+
+int grayImagePages(const std::string& path) {
+  if (imageKind(path) == ImageKind::png)
+    return 1;
+  return static_cast<int>(TIFFNumberOfDirectories(openTiff(path).get()));
 }
 
 }  // namespace impm

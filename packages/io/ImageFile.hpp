@@ -21,7 +21,11 @@ struct GrayImage {
 };
 
 // Reads the file by its signature (not its name); throws FileError(path, reason) when it is
-// missing, unreadable, truncated, not a PNG or TIFF, or not grayscale.
-GrayImage readGrayImage(const std::string& path);
+// missing, unreadable, truncated, not a PNG or TIFF, or not grayscale.  page: the page of a
+// multi-page TIFF (counted from 0; a PNG has page 0 only).
+GrayImage readGrayImage(const std::string& path, int page = 0);
+
+// The number of pages of a TIFF (1 for a PNG); throws FileError as readGrayImage does.
+int grayImagePages(const std::string& path);
 
 }  // namespace impm

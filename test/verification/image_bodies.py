@@ -61,22 +61,36 @@ def png(path, rows, bits=8, colour=False):
 def tiff16(path, rows, sample_format=1):
     """Writes rows of 16-bit levels as a little-endian, uncompressed, one-strip TIFF
     (sample_format: 1 unsigned, 2 signed, 3 floating-point)."""
-    height, width = len(rows), len(rows[0])
-    data = b"".join(struct.pack("<%dH" % width, *row) for row in rows)
-    entries = [(256, 3, 1, width), (257, 3, 1, height), (258, 3, 1, 16), (259, 3, 1, 1),
-               (262, 3, 1, 1), (273, 4, 1, 8), (277, 3, 1, 1), (278, 3, 1, height),
-               (279, 4, 1, len(data)), (339, 3, 1, sample_format)]
-    ifd = struct.pack("<H", len(entries))
-    for tag, kind, count, value in entries:
-        ifd += struct.pack("<HHI", tag, kind, count) + (
-            struct.pack("<HH", value, 0) if kind == 3 else struct.pack("<I", value))
-    ifd += struct.pack("<I", 0)
+    tiff16_pages(path, [rows], sample_format)
+
+
+def tiff16_pages(path, pages, sample_format=1):
+    """The same with a page for each image of pages: the images' strips first, then their
+    directories one after the other, each naming the next."""
+    strips = [b"".join(struct.pack("<%dH" % len(rows[0]), *row) for row in rows) for rows in pages]
+    entries = 10
+    size = 2 + 12 * entries + 4
+    first = 8 + sum(len(s) for s in strips)
+    out, at, ifds = b"II*\0" + struct.pack("<I", first), 8, b""
+    for k, (rows, data) in enumerate(zip(pages, strips)):
+        height, width = len(rows), len(rows[0])
+        fields = [(256, 3, 1, width), (257, 3, 1, height), (258, 3, 1, 16), (259, 3, 1, 1),
+                  (262, 3, 1, 1), (273, 4, 1, at), (277, 3, 1, 1), (278, 3, 1, height),
+                  (279, 4, 1, len(data)), (339, 3, 1, sample_format)]
+        ifds += struct.pack("<H", entries)
+        for tag, kind, count, value in fields:
+            ifds += struct.pack("<HHI", tag, kind, count) + (
+                struct.pack("<HH", value, 0) if kind == 3 else struct.pack("<I", value))
+        ifds += struct.pack("<I", first + (k + 1) * size if k + 1 < len(pages) else 0)
+        out += data
+        at += len(data)
     with open(path, "wb") as f:
-        f.write(b"II*\0" + struct.pack("<I", 8 + len(data)) + data + ifd)
+        f.write(out + ifds)
 
 
 def deck(path, bodies, cells=(8, 8)):
-    """A static deck with no loads on a 4 x 4 domain and the given image bodies."""
+    """A static deck with no loads on a 4 x 4 (x 4: three cell counts) domain and the given
+    image bodies."""
     # One material per body (E = 100, 200, ...): a particle's body is its material.
     materials = "".join(
         '<ParameterList name="%s"><Parameter name="Model" type="string" value="linear-elastic"/>'
@@ -86,8 +100,9 @@ def deck(path, bodies, cells=(8, 8)):
             '<ParameterList name="Discretization"><Parameter name="Method" type="string" '
             'value="cpdi"/></ParameterList>',
             '<ParameterList name="Grid"><Parameter name="Cells" type="Array(int)" '
-            'value="{%d, %d}"/><Parameter name="Length" type="Array(double)" '
-            'value="{4.0, 4.0}"/></ParameterList>' % cells,
+            'value="{%s}"/><Parameter name="Length" type="Array(double)" '
+            'value="{%s}"/></ParameterList>' % (", ".join(str(n) for n in cells),
+                                                 ", ".join("4.0" for _ in cells)),
             '<ParameterList name="Materials">%s</ParameterList>' % materials,
             '<ParameterList name="Bodies">']
     for name, params in bodies.items():

@@ -9,18 +9,20 @@ namespace impm {
 
 void Image::declareParameters(Teuchos::ParameterList& valid) {
   declareString(valid, "Image File", "body.png",
-                "2-D: the grayscale PNG or TIFF image (8 or 16 bits), relative to the deck's "
-                "directory",
+                "The grayscale PNG or TIFF image (8 or 16 bits), relative to the deck's "
+                "directory; 3-D: a multi-page TIFF (a page a slice) or a printf-style pattern "
+                "of slice files (slice_%03d.png, see Slices)",
                 true);
-  declareDouble(valid, "Pixel Size", 1.0, "2-D: the side of a (square) pixel", Bounds::positive(),
-                true);
-  declareDoubleArray(valid, "Image Origin", {0.0, 0.0}, {2},
-                     "2-D: position (x, y) of the image's lower-left corner", Bounds::any(), true);
+  declareDouble(valid, "Pixel Size", 1.0, "The side of a (square) pixel", Bounds::positive(), true);
+  declareDoubleArray(valid, "Image Origin", {0.0, 0.0}, {2, 3},
+                     "Position of the image's lower-left corner: (x, y); 3-D: (x, y, z), the "
+                     "lower corner of the stack's lowest layer",
+                     Bounds::any(), true);
   declareIntArray(valid, "Gray Range", {1, 255}, {2},
-                  "2-D: the body's pixels: those with lowest <= gray level <= highest",
+                  "The body's pixels (voxels): those with lowest <= gray level <= highest",
                   Bounds::atLeast(0), true);
   declareInt(valid, "Particles Per Pixel", 1,
-             "2-D: particles per pixel and direction (n x n per pixel, domains tiling it)",
+             "Particles per pixel (voxel) and direction (n x n, 3-D n x n x n, domains tiling it)",
              Bounds::atLeast(1));
 }
 
@@ -31,6 +33,9 @@ Image::Image(const Teuchos::ParameterList& params, const std::string& path)
   const auto& o = params.get<Teuchos::Array<double>>("Image Origin");
   const auto& range = params.get<Teuchos::Array<int>>("Gray Range");
   lowest_ = range[0], highest_ = range[1];
+  if (o.size() != 2)
+    throw InputError(path + "/Image Origin",
+                     "expected 2 entries (x, y) for a 2-D image, got " + std::to_string(o.size()));
   if (lowest_ > highest_)
     throw InputError(path + "/Gray Range", "the lowest level " + std::to_string(lowest_) +
                                                " is above the highest " + std::to_string(highest_));

@@ -1,5 +1,6 @@
 #include "app/shapes/ShapeFactory.hpp"
 
+#include <algorithm>
 #include <functional>
 #include <type_traits>
 
@@ -11,6 +12,7 @@
 #include "app/shapes/Interval.hpp"
 #include "app/shapes/Mesh.hpp"
 #include "app/shapes/Polygon.hpp"
+#include "app/shapes/VoxelStack.hpp"
 #include "core/Errors.hpp"
 #include "core/Parameters.hpp"
 
@@ -58,6 +60,7 @@ const std::vector<Entry>& registry() {
       entry<Interval>("interval"), entry<Box<2>>("rectangle"), entry<Ball<2>>("disk"),
       entry<Polygon>("polygon"),   entry<Image>("image"),      entry<Mesh>("mesh"),
       entry<Box<3>>("box"),        entry<Ball<3>>("sphere"),   entry<Cylinder>("cylinder"),
+      entry<VoxelStack>("image"),  // a name of two dimensions: the deck's picks the one
   };
   return shapes;
 }
@@ -78,11 +81,12 @@ std::shared_ptr<const Shape<3>> extrusion(std::shared_ptr<const Shape<2>> base,
 void declareShapeParameters(Teuchos::ParameterList& valid) {
   std::vector<std::string> names;
   for (const auto& e : registry())
-    names.push_back(e.name);
+    if (std::find(names.begin(), names.end(), e.name) == names.end())
+      names.push_back(e.name);
   declareChoice(valid, "Shape", "interval", names,
                 "Geometry of the body in the reference configuration: interval (1-D); "
                 "rectangle, disk, polygon, image or mesh (2-D; in a 3-D deck extruded along z, "
-                "see Extrusion); box, sphere or cylinder (3-D)");
+                "see Extrusion); box, sphere, cylinder or image (3-D: a stack of slices)");
   declareDoubleArray(valid, "Extrusion", {0.0, 1.0}, {2},
                      "3-D decks with a 2-D shape: {z0, z1}, the shape extruded along z from z0 to "
                      "z1 (filled on sub-cells like the 3-D shapes)");
@@ -94,32 +98,37 @@ template <int Dim>
 std::shared_ptr<const Shape<Dim>> createShape(const Teuchos::ParameterList& params,
                                               const std::string& path) {
   const auto& name = params.get<std::string>("Shape");
-  for (const auto& e : registry()) {
-    if (e.name != name)
-      continue;
-    const bool extruded = setInDeck(params, "Extrusion");
-    if (extruded && (Dim != 3 || e.dimension != 2))
-      throw InputError(path + "/Extrusion", "extrudes a 2-D shape in a 3-D deck; shape '" + name +
-                                                "' is " + std::to_string(e.dimension) +
-                                                "-D and the grid " + std::to_string(Dim) + "-D");
-    if constexpr (Dim == 3)
-      if (extruded)
-        return extrusion(e.create2(params, path), params, path);
-    if (e.dimension != Dim)
-      throw InputError(
-          path + "/Shape",
-          "shape '" + name + "' is " + std::to_string(e.dimension) + "-D but the grid is " +
-              std::to_string(Dim) + "-D" +
-              (Dim == 3 && e.dimension == 2 ? " (give Extrusion = {z0, z1} to extrude it along z)"
-                                            : ""));
-    if constexpr (Dim == 1)
-      return e.create1(params, path);
-    else if constexpr (Dim == 2)
-      return e.create2(params, path);
-    else
-      return e.create3(params, path);
-  }
-  throw std::logic_error("unregistered shape " + name);
+  const bool extruded = setInDeck(params, "Extrusion");
+  // A name may stand for shapes of two dimensions (image): the one of the deck's, or of the
+  // 2-D outline it extrudes.
+  const int wanted = extruded ? 2 : Dim;
+  const Entry* chosen = nullptr;
+  for (const auto& e : registry())
+    if (e.name == name && (!chosen || e.dimension == wanted))
+      chosen = &e;
+  if (!chosen)
+    throw std::logic_error("unregistered shape " + name);
+  const Entry& e = *chosen;
+  if (extruded && (Dim != 3 || e.dimension != 2))
+    throw InputError(path + "/Extrusion", "extrudes a 2-D shape in a 3-D deck; shape '" + name +
+                                              "' is " + std::to_string(e.dimension) +
+                                              "-D and the grid " + std::to_string(Dim) + "-D");
+  if constexpr (Dim == 3)
+    if (extruded)
+      return extrusion(e.create2(params, path), params, path);
+  if (e.dimension != Dim)
+    throw InputError(
+        path + "/Shape",
+        "shape '" + name + "' is " + std::to_string(e.dimension) + "-D but the grid is " +
+            std::to_string(Dim) + "-D" +
+            (Dim == 3 && e.dimension == 2 ? " (give Extrusion = {z0, z1} to extrude it along z)"
+                                          : ""));
+  if constexpr (Dim == 1)
+    return e.create1(params, path);
+  else if constexpr (Dim == 2)
+    return e.create2(params, path);
+  else
+    return e.create3(params, path);
 }
 
 template std::shared_ptr<const Shape<1>> createShape<1>(const Teuchos::ParameterList&,
