@@ -146,6 +146,14 @@ def expect_error(impm, path, words, failures):
                         % (os.path.basename(path), words, r.returncode, written))
 
 
+def finish(work, failures):
+    """Removes the work directory, prints the failures and exits with their verdict."""
+    shutil.rmtree(work)
+    for f in failures:
+        print("FAIL:", f)
+    sys.exit(1 if failures else 0)
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--impm", required=True)
@@ -212,10 +220,7 @@ def main():
     deck(os.path.join(work, "outside.xml"), {"b": image_body("l.png", 100, 255, origin="{3.5, 1.0}")})
     expect_error(args.impm, os.path.join(work, "outside.xml"), ["Bodies/b/Image Origin"], failures)
 
-    shutil.rmtree(work)
-    for f in failures:
-        print("FAIL:", f)
-    sys.exit(1 if failures else 0)
+    finish(work, failures)
 
 
 if __name__ == "__main__":

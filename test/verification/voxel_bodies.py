@@ -20,11 +20,10 @@ Writes its own stacks with image_bodies.py's PNG and TIFF writers:
 
 import argparse
 import os
-import shutil
-import sys
 import tempfile
 
-from image_bodies import L_SHAPE, deck, expect_error, image_body, particles, png, tiff16_pages
+from image_bodies import (L_SHAPE, deck, expect_error, finish, image_body, particles, png,
+                          tiff16_pages)
 
 H, T = 0.25, 0.5  # pixel size, slice thickness
 DOT = [["#" if (r, c) == (0, 0) else "." for c in range(6)] for r in range(5)]
@@ -136,10 +135,7 @@ def main():
         deck(path, bodies, cells)
         expect_error(args.impm, path, words, failures)
 
-    shutil.rmtree(work)
-    for f in failures:
-        print("FAIL:", f)
-    sys.exit(1 if failures else 0)
+    finish(work, failures)
 
 
 if __name__ == "__main__":
